@@ -1,0 +1,26 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
+/* hal_host.h - calls the module host makes around a component's init and exit:
+ * rtapi_app in the simulated flavor, the module loader glue in the kernel flavor.
+ * Not for components. */
+#ifndef HAL_HOST_H
+#define HAL_HOST_H
+
+#include "hal.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Components that call hal_init() until the next call are recorded as created by
+ * 'module' loaded with 'args' (shown by "show comp", written by "save comp").
+ * Pass NULL, NULL after rtapi_app_main() returns. Init code only. */
+void hal_set_load_context(const char *module, const char *args);
+
+/* Remove every component created by 'module' (after rtapi_app_exit(), or when
+ * rtapi_app_main() failed and left some behind). Returns how many were removed. */
+int hal_exit_module_comps(const char *module);
+
+#ifdef __cplusplus
+}
+#endif
+#endif /* HAL_HOST_H */

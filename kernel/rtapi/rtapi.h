@@ -1,0 +1,152 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
+/* rtapi.h - the RTAPI interface (rtapi(3rtapi) and its pages), the only header
+ * realtime code needs besides hal.h. The same declarations serve both flavors;
+ * the few type/errno differences between kernel and userspace live here and in
+ * kernel/rtapi/, never in components. */
+#ifndef RTAPI_H
+#define RTAPI_H
+
+#if defined(__KERNEL__)
+#include <linux/types.h>
+#include <linux/errno.h>
+#include <linux/stddef.h>
+#include <linux/stdarg.h>
+#else
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <errno.h>
+#include <stdarg.h>
+#include <linux/types.h>	/* __u32, __s32, __u64 as the hal_type_t page names them */
+#endif
+
+#if !defined(RTAPI) && !defined(ULAPI)
+#error "define RTAPI (realtime code) or ULAPI (userspace code) before including rtapi.h"
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef __u8 rtapi_u8;
+typedef __s8 rtapi_s8;
+typedef __u16 rtapi_u16;
+typedef __s16 rtapi_s16;
+typedef __u32 rtapi_u32;
+typedef __s32 rtapi_s32;
+typedef __u64 rtapi_u64;
+typedef __s64 rtapi_s64;
+
+#define RTAPI_NAME_LEN 31	/* module names are truncated to this */
+
+/* Message levels (rtapi_print_msg(3rtapi)). */
+typedef enum {
+	RTAPI_MSG_NONE = 0,
+	RTAPI_MSG_ERR,
+	RTAPI_MSG_WARN,
+	RTAPI_MSG_INFO,
+	RTAPI_MSG_DBG,
+	RTAPI_MSG_ALL
+} msg_level_t;
+
+/* --- module registration: init/cleanup code only --- */
+int rtapi_init(const char *modname);	/* > 0 module id, or -errno */
+int rtapi_exit(int module_id);
+
+/* --- formatting and messages: any context --- */
+int rtapi_snprintf(char *buf, unsigned long int size, const char *fmt, ...)
+	__attribute__((format(printf, 3, 4)));
+int rtapi_vsnprintf(char *buf, unsigned long int size, const char *fmt, va_list ap);
+void rtapi_print(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+void rtapi_print_msg(int level, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+int rtapi_set_msg_level(int level);	/* 0, or -EINVAL for a level outside NONE..ALL */
+int rtapi_get_msg_level(void);
+/* The handler receives the formatted message (not yet newline-stripped). */
+typedef void (*rtapi_msg_handler_t)(msg_level_t level, const char *msg);
+void rtapi_set_msg_handler(rtapi_msg_handler_t handler);	/* NULL restores the default */
+rtapi_msg_handler_t rtapi_get_msg_handler(void);
+
+/* --- time --- */
+long int rtapi_clock_set_period(long int nsec);	/* 0 queries; first nonzero call starts */
+void rtapi_delay(long int nsec);			/* busy-wait, capped at rtapi_delay_max() */
+long int rtapi_delay_max(void);
+long long rtapi_get_time(void);			/* monotonic ns */
+long long rtapi_get_clocks(void);			/* CPU clocks (TSC) */
+
+/* --- 64-bit division without libgcc helpers (rtapi_div_u64(3rtapi)) --- */
+static inline __u64 rtapi_div_u64_rem(__u64 dividend, __u32 divisor, __u32 *remainder)
+{
+	*remainder = (__u32)(dividend % divisor);
+	return dividend / divisor;
+}
+static inline __u64 rtapi_div_u64(__u64 dividend, __u32 divisor)
+{
+	return dividend / divisor;
+}
+static inline __s64 rtapi_div_s64(__s64 dividend, __s32 divisor)
+{
+	return dividend / divisor;
+}
+
+/* --- tearing-free 64-bit access for values realtime code writes and tools read --- */
+static inline __u64 rtapi_load_u64(const volatile __u64 *p)
+{
+	return __atomic_load_n(p, __ATOMIC_RELAXED);
+}
+static inline void rtapi_store_u64(volatile __u64 *p, __u64 v)
+{
+	__atomic_store_n(p, v, __ATOMIC_RELAXED);
+}
+
+/* --- priorities (rtapi_prio(3rtapi)): higher number = higher priority --- */
+int rtapi_prio_highest(void);
+int rtapi_prio_lowest(void);
+int rtapi_prio_next_higher(int prio);
+int rtapi_prio_next_lower(int prio);
+
+/* --- tasks: create/delete/start from init/cleanup code only --- */
+int rtapi_task_new(void (*taskcode)(void *), void *arg, int prio,
+		   unsigned long stacksize, int uses_fp);
+int rtapi_task_delete(int task_id);
+int rtapi_task_start(int task_id, unsigned long int period_nsec);
+void rtapi_task_wait(void);	/* from inside a periodic task only */
+void rtapi_wait(void);		/* older name of rtapi_task_wait */
+int rtapi_task_pause(int task_id);
+int rtapi_task_resume(int task_id);
+int rtapi_task_self(void);	/* id of the calling task, or -EINVAL outside one */
+/* Overruns (missed periods) counted for a task since it started. */
+long long rtapi_task_overruns(int task_id);
+
+/* --- shared memory (rtapi_shmem(3rtapi)) --- */
+int rtapi_shmem_new(int key, int module_id, unsigned long int size);
+int rtapi_shmem_delete(int shmem_id, int module_id);
+int rtapi_shmem_getptr(int shmem_id, void **ptr);
+
+/* --- mutexes: an unsigned long word, usable between kernel and userspace --- */
+static inline int rtapi_mutex_try(unsigned long *mutex)
+{
+	return __atomic_test_and_set(mutex, __ATOMIC_ACQUIRE) ? 1 : 0;
+}
+void rtapi_mutex_get(unsigned long *mutex);	/* blocks: never from a realtime task */
+static inline void rtapi_mutex_give(unsigned long *mutex)
+{
+	__atomic_clear(mutex, __ATOMIC_RELEASE);
+}
+
+/* --- hardware I/O (rtapi_outb(3rtapi), rtapi_region(3rtapi)) --- */
+void rtapi_outb(unsigned char byte, unsigned int port);
+unsigned char rtapi_inb(unsigned int port);
+void rtapi_outw(unsigned short word, unsigned int port);
+unsigned short rtapi_inw(unsigned int port);
+void rtapi_outl(unsigned int word, unsigned int port);
+unsigned int rtapi_inl(unsigned int port);
+void *rtapi_request_region(unsigned long base, unsigned long int size, const char *name);
+void rtapi_release_region(unsigned long base, unsigned long int size);
+
+/* --- non-realtime helper used by HAL to wait for threads to finish a cycle --- */
+void rtapi_sleep_ns(long long nsec);	/* init/cleanup/user code only */
+
+#ifdef __cplusplus
+}
+#endif
+#endif /* RTAPI_H */
