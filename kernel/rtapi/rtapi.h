@@ -143,6 +143,9 @@ unsigned int rtapi_inl(unsigned int port);
 void *rtapi_request_region(unsigned long base, unsigned long int size, const char *name);
 void rtapi_release_region(unsigned long base, unsigned long int size);
 
+/* Process id of the caller (userspace), 0 in the kernel. */
+long rtapi_getpid(void);
+
 /* --- non-realtime helper used by HAL to wait for threads to finish a cycle --- */
 void rtapi_sleep_ns(long long nsec);	/* init/cleanup/user code only */
 

@@ -1,0 +1,107 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
+/* hal_internal.h - what the HAL library files share. Functions named *_locked
+ * expect the caller to hold the HAL mutex; the public API wraps each one once. */
+#ifndef HAL_INTERNAL_H
+#define HAL_INTERNAL_H
+
+#include "hal.h"
+#include "hal_layout.h"
+
+/* --- per-address-space state (hal_segment.c) --- */
+extern char *hal_shmem_base;		/* this process's (or the kernel's) mapping */
+extern struct hal_seg_hdr *hal_seg;	/* == hal_shmem_base, typed */
+
+static inline void *hal_ptr(rtapi_u32 off)
+{
+	return off ? hal_shmem_base + off : 0;
+}
+static inline rtapi_u32 hal_off(const volatile void *ptr)
+{
+	return (rtapi_u32)((const char *)ptr - hal_shmem_base);
+}
+/* Is [p, p+len) inside the segment? (pin/param storage must be) */
+static inline bool hal_in_segment(const volatile void *p, unsigned long len)
+{
+	const char *c = (const char *)p;
+
+	return hal_shmem_base && c >= hal_shmem_base + sizeof(struct hal_seg_hdr) &&
+	       c + len <= hal_shmem_base + hal_seg->size;
+}
+
+int hal_segment_map(void);		/* map (and first time initialise) the segment */
+void hal_segment_unmap(void);		/* when the last local user is gone */
+void hal_segment_init(struct hal_seg_hdr *seg, rtapi_u32 size);	/* lays out an empty segment */
+extern int hal_local_users;		/* components of this address space + explicit attach */
+
+/* --- locking (hal_lock.c) --- */
+void hal_lock(void);
+void hal_unlock(void);
+/* 0, or -EPERM with a message naming 'what' when 'level' is locked. */
+int hal_check_lock(unsigned level, const char *what);
+
+/* --- heap (hal_alloc.c): base is the segment start --- */
+void *hal_alloc_block(struct hal_seg_hdr *seg, rtapi_u32 size, enum hal_kind kind, rtapi_u32 owner_off);
+void hal_free_block(struct hal_seg_hdr *seg, void *data);
+/* Free every block owned by 'owner_off', then merge free neighbours. */
+void hal_free_owned(struct hal_seg_hdr *seg, rtapi_u32 owner_off);
+void hal_heap_compact(struct hal_seg_hdr *seg);
+
+/* --- name index and kind lists (hal_index.c) --- */
+rtapi_u32 hal_name_hash(enum hal_kind kind, const char *name);
+void hal_index_insert(struct hal_seg_hdr *seg, struct hal_obj_hdr *obj);
+void hal_index_remove(struct hal_seg_hdr *seg, struct hal_obj_hdr *obj);
+struct hal_obj_hdr *hal_index_find(struct hal_seg_hdr *seg, enum hal_kind kind, const char *name);
+/* Allocate a named record of 'size' bytes, check the name, index it. Logs and returns NULL
+ * with *err set on failure (-EINVAL bad/long name, -EEXIST duplicate, -ENOMEM). */
+void *hal_object_new(enum hal_kind kind, rtapi_u32 size, const char *name, rtapi_u32 owner_off, int *err);
+void hal_object_delete(struct hal_obj_hdr *obj);
+static inline void *hal_find(enum hal_kind kind, const char *name)
+{
+	return hal_index_find(hal_seg, kind, name);
+}
+/* First/next object of a kind in creation order. */
+static inline struct hal_obj_hdr *hal_first(enum hal_kind kind)
+{
+	return hal_ptr(hal_seg->list_head[kind]);
+}
+static inline struct hal_obj_hdr *hal_next(const struct hal_obj_hdr *obj)
+{
+	return hal_ptr(obj->next_off);
+}
+const char *hal_kind_name(enum hal_kind kind);	/* "pin", "signal", ... for messages */
+/* Format a name from fmt/args into buf (HAL_NAME_LEN + 1); -EINVAL + message if too long. */
+int hal_format_name(char *buf, const char *what, const char *fmt, va_list ap);
+
+/* --- components (hal_comp.c) --- */
+struct hal_comp_rec *hal_comp_by_id(int comp_id);
+/* The component that owns objects created now without a comp_id (hal_malloc,
+ * hal_create_thread): the last one hal_init()ed in this address space. */
+extern rtapi_u32 hal_current_comp_off;
+const char *hal_type_name(int type);
+const char *hal_dir_name(int dir);
+
+/* --- pins, signals (hal_pin.c, hal_signal.c) --- */
+int hal_pin_new_locked(const char *name, hal_type_t type, hal_pin_dir_t dir, void **data_ptr_addr,
+		       struct hal_comp_rec *comp);
+void hal_pin_aim(struct hal_pin_rec *pin, volatile void *target);	/* set the owner's pointer */
+void hal_pin_unlink_locked(struct hal_pin_rec *pin);
+void hal_pin_delete_locked(struct hal_pin_rec *pin);
+int hal_param_new_locked(const char *name, hal_type_t type, hal_param_dir_t dir, volatile void *data_addr,
+			 struct hal_comp_rec *comp);
+void hal_param_delete_locked(struct hal_param_rec *param);
+/* Value storage of a pin as this process sees it: the signal's value or the dummy. */
+union hal_data *hal_pin_value(struct hal_pin_rec *pin);
+
+/* --- functions and threads (hal_funct.c, hal_thread.c) --- */
+/* The <name>.time pin and <name>.tmax param every function and thread has. */
+int hal_timing_objects_new(const char *name, hal_s32_t **time_ptr, rtapi_s32 *tmax,
+			   struct hal_comp_rec *comp);
+void hal_timing_objects_delete(const char *name);
+void hal_funct_delete_locked(struct hal_funct_rec *f);
+void hal_thread_delete_locked(struct hal_thread_rec *t);
+/* Remove every entry of 'f' from every thread. */
+void hal_funct_remove_from_threads(struct hal_funct_rec *f);
+/* Wait (bounded) until no thread is in the middle of running its functions. */
+void hal_threads_quiesce(void);
+
+#endif /* HAL_INTERNAL_H */

@@ -1,0 +1,169 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
+/* hal_layout.h - the records of the HAL shared-memory segment (DESIGN.md "The HAL
+ * shared-memory object model"). Every process and the kernel map the segment at a
+ * different address, so records refer to each other by offsets from the segment
+ * start; the only pointers are the per-owner pin pointers and function addresses,
+ * which are meaningful in their owner's address space only. Only kernel/hal/
+ * includes this file. */
+#ifndef HAL_LAYOUT_H
+#define HAL_LAYOUT_H
+
+#include "hal.h"
+
+#define HAL_KEY 0x48414c32		/* "HAL2": RTAPI shmem key of the segment */
+#define HAL_SEGMENT_SIZE (64u << 20)	/* sparse in userspace; holds ~100k pins */
+#define HAL_LAYOUT_VERSION 1
+#define HAL_SEG_MAGIC 0x48414c21
+#define HAL_HASH_BUCKETS 65536u		/* power of two */
+#define HAL_ALIGN 8u
+
+/* What a heap block holds. Kinds below HAL_KIND_COUNT are named, indexed objects. */
+enum hal_kind {
+	HAL_KIND_FREE = 0,
+	HAL_KIND_COMP,
+	HAL_KIND_PIN,
+	HAL_KIND_PARAM,
+	HAL_KIND_SIG,
+	HAL_KIND_FUNCT,
+	HAL_KIND_THREAD,
+	HAL_KIND_COUNT,
+	HAL_KIND_MALLOC = HAL_KIND_COUNT,	/* hal_malloc() memory */
+	HAL_KIND_ENTRY,				/* a function's place in a thread */
+	HAL_KIND_STRING,			/* module arguments */
+};
+
+/* Precedes every block of the heap; blocks tile the heap from heap_start to heap_top. */
+struct hal_block_hdr {
+	rtapi_u32 size;		/* bytes including this header, multiple of HAL_ALIGN */
+	rtapi_u32 owner_off;	/* component record freed with, 0 = none */
+	rtapi_u32 next_free_off;/* free list link while HAL_KIND_FREE */
+	rtapi_u16 kind;		/* enum hal_kind */
+	rtapi_u16 pad;
+};
+_Static_assert(sizeof(struct hal_block_hdr) == 16, "segment layout changed: bump HAL_LAYOUT_VERSION");
+
+/* Common head of every named object; must be first in the record. */
+struct hal_obj_hdr {
+	rtapi_u32 next_off;	/* kind list, in creation order */
+	rtapi_u32 prev_off;
+	rtapi_u32 hash_next_off;/* name index bucket chain */
+	rtapi_u32 owner_off;	/* owning component record (0 for signals) */
+	rtapi_u32 hash;
+	rtapi_u8 kind;		/* enum hal_kind */
+	rtapi_u8 pad[3];
+	char name[HAL_NAME_LEN + 1];
+};
+_Static_assert(sizeof(struct hal_obj_hdr) == 72, "segment layout changed: bump HAL_LAYOUT_VERSION");
+
+/* Storage of one value; a signal's value and a pin's dummy are this. */
+union hal_data {
+	hal_bit_t b;
+	hal_s32_t s;
+	hal_u32_t u;
+	hal_float_t f;
+	rtapi_u64 raw;
+};
+
+struct hal_comp_rec {
+	struct hal_obj_hdr hdr;
+	rtapi_s32 comp_id;
+	rtapi_s32 pid;		/* userspace components: the process; RT: 0 */
+	rtapi_u8 is_realtime;
+	rtapi_u8 is_ready;
+	rtapi_u8 pad[2];
+	rtapi_u32 args_off;	/* HAL_KIND_STRING block with the module arguments, or 0 */
+	rtapi_u64 mem_base;	/* where the owner maps the segment: pins point at mem_base + off */
+	rtapi_u64 constructor;	/* hal_constructor_t in the owner's address space */
+	char module[HAL_NAME_LEN + 1];
+};
+_Static_assert(sizeof(struct hal_comp_rec) == 152, "segment layout changed: bump HAL_LAYOUT_VERSION");
+
+struct hal_pin_rec {
+	struct hal_obj_hdr hdr;
+	rtapi_u32 data_ptr_off;	/* the owner's pointer variable (in hal_malloc memory) */
+	rtapi_u32 signal_off;	/* linked signal, 0 = unlinked (pointer aims at dummy) */
+	rtapi_u8 type;		/* hal_type_t */
+	rtapi_u8 dir;		/* hal_pin_dir_t */
+	rtapi_u8 pad[6];
+	union hal_data dummy;	/* the value while unlinked */
+};
+_Static_assert(sizeof(struct hal_pin_rec) == 96, "segment layout changed: bump HAL_LAYOUT_VERSION");
+
+struct hal_param_rec {
+	struct hal_obj_hdr hdr;
+	rtapi_u32 data_off;	/* the owner's variable (in hal_malloc memory) */
+	rtapi_u8 type;
+	rtapi_u8 dir;		/* hal_param_dir_t */
+	rtapi_u8 pad[2];
+};
+_Static_assert(sizeof(struct hal_param_rec) == 80, "segment layout changed: bump HAL_LAYOUT_VERSION");
+
+struct hal_sig_rec {
+	struct hal_obj_hdr hdr;
+	rtapi_u16 readers;	/* HAL_IN pins linked */
+	rtapi_u16 writers;	/* HAL_OUT pins linked: 0 or 1, hal_link() refuses a second */
+	rtapi_u16 bidirs;	/* HAL_IO pins linked */
+	rtapi_u8 type;
+	rtapi_u8 pad;
+	union hal_data value;	/* linked pins point here */
+};
+_Static_assert(sizeof(struct hal_sig_rec) == 88, "segment layout changed: bump HAL_LAYOUT_VERSION");
+
+struct hal_funct_rec {
+	struct hal_obj_hdr hdr;
+	rtapi_u64 funct;	/* hal_funct_t in the owner's address space */
+	rtapi_u64 arg;
+	hal_s32_t *time_ptr;	/* pin <name>.time: written by the thread after each call */
+	rtapi_s32 tmax;		/* param <name>.tmax */
+	rtapi_s32 users;	/* threads it is on */
+	rtapi_u8 uses_fp;
+	rtapi_u8 reentrant;
+	rtapi_u8 pad[6];
+};
+_Static_assert(sizeof(struct hal_funct_rec) == 112, "segment layout changed: bump HAL_LAYOUT_VERSION");
+
+/* A function's place in a thread's list (HAL_KIND_ENTRY block, no name). */
+struct hal_entry_rec {
+	rtapi_u32 next_off;	/* written last when inserting: the thread walks without locking */
+	rtapi_u32 funct_off;
+};
+
+struct hal_thread_rec {
+	struct hal_obj_hdr hdr;
+	rtapi_s64 period_ns;
+	rtapi_s32 priority;
+	rtapi_s32 task_id;	/* RTAPI task running hal_thread_task() */
+	rtapi_u32 first_entry_off;/* functions in execution order */
+	rtapi_u32 cycle_seq;	/* odd while functions run: hal_thread_quiesce() waits on it */
+	hal_s32_t *time_ptr;	/* pin <name>.time */
+	rtapi_s32 tmax;		/* param <name>.tmax */
+	rtapi_u8 uses_fp;
+	rtapi_u8 pad[3];
+	rtapi_u64 cycles;	/* completed cycles: written by the thread only */
+	rtapi_u64 run_ns;	/* time spent in functions: written by the thread only */
+};
+_Static_assert(sizeof(struct hal_thread_rec) == 128, "segment layout changed: bump HAL_LAYOUT_VERSION");
+
+/* The segment starts with this header. */
+struct hal_seg_hdr {
+	rtapi_u32 init_state;	/* 0 new (zeroed by RTAPI), 1 being initialised, 2 ready */
+	rtapi_u32 magic;
+	rtapi_u32 version;
+	rtapi_u32 size;
+	unsigned long mutex;	/* guards every configuration change; never taken by threads */
+	rtapi_u32 lock_level;	/* HAL_LOCK_* bits */
+	rtapi_u32 threads_running;
+	rtapi_s32 next_comp_id;
+	rtapi_u32 hash_off;	/* HAL_HASH_BUCKETS u32 offsets */
+	rtapi_s64 base_period_ns;/* set by the first thread */
+	rtapi_u32 heap_start;
+	rtapi_u32 heap_top;	/* first byte never allocated */
+	rtapi_u32 free_head;	/* free blocks, unordered */
+	rtapi_u32 bytes_used;
+	rtapi_u32 list_head[HAL_KIND_COUNT];
+	rtapi_u32 list_tail[HAL_KIND_COUNT];
+	rtapi_u32 count[HAL_KIND_COUNT];
+	rtapi_u32 pad;
+};
+
+#endif /* HAL_LAYOUT_H */

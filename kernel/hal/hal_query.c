@@ -1,0 +1,471 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
+/* hal_query.c - the tool-side view of the HAL (hal_query.h): snapshots of every
+ * object and checked writes by name, for halcmd, halsampler, halmeter. ULAPI only. */
+#include "hal_internal.h"
+#include "hal_query.h"
+#include "rtapi_string.h"
+
+static bool attached;
+
+int hal_attach(void)
+{
+	int rc;
+
+	if (attached)
+		return 0;
+	rc = hal_segment_map();
+	if (rc < 0)
+		return rc;
+	attached = true;
+	hal_local_users++;
+	return 0;
+}
+
+void hal_detach(void)
+{
+	if (!attached)
+		return;
+	attached = false;
+	if (--hal_local_users <= 0) {
+		hal_local_users = 0;
+		hal_segment_unmap();
+	}
+}
+
+void hal_release_mutex(void)
+{
+	if (hal_seg)
+		rtapi_mutex_give(&hal_seg->mutex);
+}
+
+static int need_segment(void)
+{
+	if (hal_seg)
+		return 0;
+	rtapi_print_msg(RTAPI_MSG_ERR, "HAL is not attached (call hal_attach first)\n");
+	return -EINVAL;
+}
+
+static void copy_name(char *dst, const char *src)
+{
+	rtapi_snprintf(dst, HAL_NAME_LEN + 1, "%s", src);
+}
+
+static void read_value(union hal_value *v, int type, const volatile union hal_data *d)
+{
+	v->f = 0;
+	switch (type) {
+	case HAL_BIT: v->b = d->b; break;
+	case HAL_S32: v->s = d->s; break;
+	case HAL_U32: v->u = d->u; break;
+	default: v->f = d->f; break;
+	}
+}
+
+static void write_value(volatile union hal_data *d, int type, const union hal_value *v)
+{
+	switch (type) {
+	case HAL_BIT: d->b = v->b; break;
+	case HAL_S32: d->s = v->s; break;
+	case HAL_U32: d->u = v->u; break;
+	default: d->f = v->f; break;
+	}
+}
+
+static const char *owner_name(const struct hal_obj_hdr *o, int *id)
+{
+	const struct hal_comp_rec *c = hal_ptr(o->owner_off);
+
+	*id = c ? c->comp_id : 0;
+	return c ? c->hdr.name : "";
+}
+
+static void comp_info(const struct hal_comp_rec *c, struct hal_comp_info *out)
+{
+	out->id = c->comp_id;
+	copy_name(out->name, c->hdr.name);
+	out->is_realtime = c->is_realtime;
+	out->is_ready = c->is_ready;
+	out->pid = c->pid;
+	copy_name(out->module, c->module);
+	rtapi_snprintf(out->args, sizeof(out->args), "%s",
+		       c->args_off ? (const char *)hal_ptr(c->args_off) : "");
+}
+
+static void pin_info(struct hal_pin_rec *p, struct hal_pin_info *out)
+{
+	const struct hal_obj_hdr *sig = hal_ptr(p->signal_off);
+
+	copy_name(out->name, p->hdr.name);
+	copy_name(out->owner, owner_name(&p->hdr, &out->owner_id));
+	out->type = p->type;
+	out->dir = p->dir;
+	read_value(&out->value, p->type, hal_pin_value(p));
+	copy_name(out->signal, sig ? sig->name : "");
+}
+
+static void param_info(const struct hal_param_rec *p, struct hal_param_info *out)
+{
+	copy_name(out->name, p->hdr.name);
+	copy_name(out->owner, owner_name(&p->hdr, &out->owner_id));
+	out->type = p->type;
+	out->dir = p->dir;
+	read_value(&out->value, p->type, hal_ptr(p->data_off));
+}
+
+static void sig_info(const struct hal_sig_rec *s, struct hal_sig_info *out)
+{
+	copy_name(out->name, s->hdr.name);
+	out->type = s->type;
+	read_value(&out->value, s->type, &s->value);
+	out->readers = s->readers;
+	out->writers = s->writers;
+	out->bidirs = s->bidirs;
+}
+
+static void funct_info(const struct hal_funct_rec *f, struct hal_funct_info *out)
+{
+	copy_name(out->name, f->hdr.name);
+	copy_name(out->owner, owner_name(&f->hdr, &out->owner_id));
+	out->code_addr = f->funct;
+	out->arg = f->arg;
+	out->uses_fp = f->uses_fp;
+	out->reentrant = f->reentrant;
+	out->users = f->users;
+}
+
+static void thread_info(struct hal_thread_rec *t, struct hal_thread_info *out)
+{
+	char time_pin[HAL_NAME_LEN + 8];
+	struct hal_pin_rec *pin;
+	int id;
+
+	copy_name(out->name, t->hdr.name);
+	copy_name(out->owner, owner_name(&t->hdr, &id));
+	out->period_ns = t->period_ns;
+	out->priority = t->priority;
+	out->uses_fp = t->uses_fp;
+	out->time = 0;
+	rtapi_snprintf(time_pin, sizeof(time_pin), "%s.time", t->hdr.name);
+	pin = hal_find(HAL_KIND_PIN, time_pin);
+	if (pin)	/* time_ptr is the owner's pointer: read through the pin record */
+		out->time = hal_pin_value(pin)->s;
+	out->tmax = t->tmax;
+	out->cycles = rtapi_load_u64(&t->cycles);
+	out->cpu_ns = rtapi_load_u64(&t->run_ns);
+	out->overruns = -1;	/* known only inside the task's own address space */
+}
+
+/* Each query walks one kind list under the lock; the callbacks copy and return. */
+int hal_query_comps(int (*cb)(const struct hal_comp_info *, void *), void *ctx)
+{
+	struct hal_comp_info info;
+	struct hal_obj_hdr *o;
+	int n = 0, rc = need_segment();
+
+	if (rc)
+		return rc;
+	hal_lock();
+	for (o = hal_first(HAL_KIND_COMP); o; o = hal_next(o), n++) {
+		comp_info((struct hal_comp_rec *)o, &info);
+		if (cb(&info, ctx))
+			break;
+	}
+	hal_unlock();
+	return n;
+}
+
+int hal_query_pins(int (*cb)(const struct hal_pin_info *, void *), void *ctx)
+{
+	struct hal_pin_info info;
+	struct hal_obj_hdr *o;
+	int n = 0, rc = need_segment();
+
+	if (rc)
+		return rc;
+	hal_lock();
+	for (o = hal_first(HAL_KIND_PIN); o; o = hal_next(o), n++) {
+		pin_info((struct hal_pin_rec *)o, &info);
+		if (cb(&info, ctx))
+			break;
+	}
+	hal_unlock();
+	return n;
+}
+
+int hal_query_params(int (*cb)(const struct hal_param_info *, void *), void *ctx)
+{
+	struct hal_param_info info;
+	struct hal_obj_hdr *o;
+	int n = 0, rc = need_segment();
+
+	if (rc)
+		return rc;
+	hal_lock();
+	for (o = hal_first(HAL_KIND_PARAM); o; o = hal_next(o), n++) {
+		param_info((struct hal_param_rec *)o, &info);
+		if (cb(&info, ctx))
+			break;
+	}
+	hal_unlock();
+	return n;
+}
+
+int hal_query_sigs(int (*cb)(const struct hal_sig_info *, void *), void *ctx)
+{
+	struct hal_sig_info info;
+	struct hal_obj_hdr *o;
+	int n = 0, rc = need_segment();
+
+	if (rc)
+		return rc;
+	hal_lock();
+	for (o = hal_first(HAL_KIND_SIG); o; o = hal_next(o), n++) {
+		sig_info((struct hal_sig_rec *)o, &info);
+		if (cb(&info, ctx))
+			break;
+	}
+	hal_unlock();
+	return n;
+}
+
+int hal_query_functs(int (*cb)(const struct hal_funct_info *, void *), void *ctx)
+{
+	struct hal_funct_info info;
+	struct hal_obj_hdr *o;
+	int n = 0, rc = need_segment();
+
+	if (rc)
+		return rc;
+	hal_lock();
+	for (o = hal_first(HAL_KIND_FUNCT); o; o = hal_next(o), n++) {
+		funct_info((struct hal_funct_rec *)o, &info);
+		if (cb(&info, ctx))
+			break;
+	}
+	hal_unlock();
+	return n;
+}
+
+int hal_query_threads(int (*cb)(const struct hal_thread_info *, void *), void *ctx)
+{
+	struct hal_thread_info info;
+	struct hal_obj_hdr *o;
+	int n = 0, rc = need_segment();
+
+	if (rc)
+		return rc;
+	hal_lock();
+	for (o = hal_first(HAL_KIND_THREAD); o; o = hal_next(o), n++) {
+		thread_info((struct hal_thread_rec *)o, &info);
+		if (cb(&info, ctx))
+			break;
+	}
+	hal_unlock();
+	return n;
+}
+
+int hal_query_thread_functs(const char *thread_name, int (*cb)(const char *, void *), void *ctx)
+{
+	struct hal_thread_rec *t;
+	rtapi_u32 off;
+	int n = 0, rc = need_segment();
+
+	if (rc)
+		return rc;
+	hal_lock();
+	t = hal_find(HAL_KIND_THREAD, thread_name);
+	for (off = t ? t->first_entry_off : 0; off; n++) {
+		struct hal_entry_rec *e = hal_ptr(off);
+
+		if (cb(((struct hal_obj_hdr *)hal_ptr(e->funct_off))->name, ctx))
+			break;
+		off = e->next_off;
+	}
+	hal_unlock();
+	return t ? n : -ENOENT;
+}
+
+/* Single lookups: the object's record copied under the lock, or -ENOENT. */
+int hal_find_comp(const char *name, struct hal_comp_info *out)
+{
+	struct hal_comp_rec *r;
+
+	if (need_segment())
+		return -EINVAL;
+	hal_lock();
+	r = hal_find(HAL_KIND_COMP, name);
+	if (r)
+		comp_info(r, out);
+	hal_unlock();
+	return r ? 0 : -ENOENT;
+}
+
+int hal_find_pin(const char *name, struct hal_pin_info *out)
+{
+	struct hal_pin_rec *r;
+
+	if (need_segment())
+		return -EINVAL;
+	hal_lock();
+	r = hal_find(HAL_KIND_PIN, name);
+	if (r)
+		pin_info(r, out);
+	hal_unlock();
+	return r ? 0 : -ENOENT;
+}
+
+int hal_find_param(const char *name, struct hal_param_info *out)
+{
+	struct hal_param_rec *r;
+
+	if (need_segment())
+		return -EINVAL;
+	hal_lock();
+	r = hal_find(HAL_KIND_PARAM, name);
+	if (r)
+		param_info(r, out);
+	hal_unlock();
+	return r ? 0 : -ENOENT;
+}
+
+int hal_find_sig(const char *name, struct hal_sig_info *out)
+{
+	struct hal_sig_rec *r;
+
+	if (need_segment())
+		return -EINVAL;
+	hal_lock();
+	r = hal_find(HAL_KIND_SIG, name);
+	if (r)
+		sig_info(r, out);
+	hal_unlock();
+	return r ? 0 : -ENOENT;
+}
+
+int hal_find_funct(const char *name, struct hal_funct_info *out)
+{
+	struct hal_funct_rec *r;
+
+	if (need_segment())
+		return -EINVAL;
+	hal_lock();
+	r = hal_find(HAL_KIND_FUNCT, name);
+	if (r)
+		funct_info(r, out);
+	hal_unlock();
+	return r ? 0 : -ENOENT;
+}
+
+int hal_find_thread(const char *name, struct hal_thread_info *out)
+{
+	struct hal_thread_rec *r;
+
+	if (need_segment())
+		return -EINVAL;
+	hal_lock();
+	r = hal_find(HAL_KIND_THREAD, name);
+	if (r)
+		thread_info(r, out);
+	hal_unlock();
+	return r ? 0 : -ENOENT;
+}
+
+int hal_set_pin_value(const char *name, const union hal_value *v)
+{
+	struct hal_pin_rec *pin;
+	int rc;
+
+	if (need_segment())
+		return -EINVAL;
+	hal_lock();
+	rc = hal_check_lock(HAL_LOCK_PARAMS, "set pins");
+	pin = rc ? 0 : hal_find(HAL_KIND_PIN, name);
+	if (rc) {
+		/* locked: message printed */
+	} else if (!pin) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "pin '%s' does not exist\n", name);
+		rc = -ENOENT;
+	} else if (pin->dir == HAL_OUT) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "pin '%s' is an output: only its component sets it\n",
+				name);
+		rc = -EPERM;
+	} else if (pin->signal_off) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "pin '%s' is linked to signal '%s': use sets instead\n",
+				name, ((struct hal_obj_hdr *)hal_ptr(pin->signal_off))->name);
+		rc = -EBUSY;
+	} else {
+		write_value(&pin->dummy, pin->type, v);
+	}
+	hal_unlock();
+	return rc;
+}
+
+int hal_set_param_value(const char *name, const union hal_value *v)
+{
+	struct hal_param_rec *param;
+	int rc;
+
+	if (need_segment())
+		return -EINVAL;
+	hal_lock();
+	rc = hal_check_lock(HAL_LOCK_PARAMS, "set parameters");
+	param = rc ? 0 : hal_find(HAL_KIND_PARAM, name);
+	if (rc) {
+		/* locked: message printed */
+	} else if (!param) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "parameter '%s' does not exist\n", name);
+		rc = -ENOENT;
+	} else if (param->dir != HAL_RW) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "parameter '%s' is read-only\n", name);
+		rc = -EPERM;
+	} else {
+		write_value(hal_ptr(param->data_off), param->type, v);
+	}
+	hal_unlock();
+	return rc;
+}
+
+int hal_set_sig_value(const char *name, const union hal_value *v)
+{
+	struct hal_sig_rec *sig;
+	int rc;
+
+	if (need_segment())
+		return -EINVAL;
+	hal_lock();
+	rc = hal_check_lock(HAL_LOCK_PARAMS, "set signals");
+	sig = rc ? 0 : hal_find(HAL_KIND_SIG, name);
+	if (rc) {
+		/* locked: message printed */
+	} else if (!sig) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "signal '%s' does not exist\n", name);
+		rc = -ENOENT;
+	} else if (sig->writers) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "signal '%s' already has a writer: cannot set it\n", name);
+		rc = -EPERM;
+	} else {
+		write_value(&sig->value, sig->type, v);
+	}
+	hal_unlock();
+	return rc;
+}
+
+bool hal_threads_running(void)
+{
+	return hal_seg && __atomic_load_n(&hal_seg->threads_running, __ATOMIC_ACQUIRE);
+}
+
+long long hal_base_period(void)
+{
+	return hal_seg ? hal_seg->base_period_ns : 0;
+}
+
+int hal_memory_usage(unsigned long *used, unsigned long *total)
+{
+	if (need_segment())
+		return -EINVAL;
+	*used = hal_seg->heap_start + hal_seg->bytes_used;
+	*total = hal_seg->size;
+	return 0;
+}

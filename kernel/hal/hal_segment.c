@@ -1,0 +1,118 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
+/* hal_segment.c - mapping the one HAL segment into this address space and laying
+ * it out the first time anybody maps it. */
+#include "hal_internal.h"
+
+char *hal_shmem_base;
+struct hal_seg_hdr *hal_seg;
+int hal_local_users;
+
+static int rtapi_module_id;
+static int shmem_id;
+
+static rtapi_u32 align_up(rtapi_u32 v)
+{
+	return (v + HAL_ALIGN - 1) & ~(HAL_ALIGN - 1);
+}
+
+void hal_segment_init(struct hal_seg_hdr *seg, rtapi_u32 size)
+{
+	rtapi_u32 *buckets;
+	rtapi_u32 i;
+
+	seg->magic = HAL_SEG_MAGIC;
+	seg->version = HAL_LAYOUT_VERSION;
+	seg->size = size;
+	seg->mutex = 0;
+	seg->lock_level = HAL_LOCK_NONE;
+	seg->threads_running = 0;
+	seg->next_comp_id = 1;
+	seg->base_period_ns = 0;
+	seg->hash_off = align_up(sizeof(*seg));
+	buckets = (rtapi_u32 *)((char *)seg + seg->hash_off);
+	for (i = 0; i < HAL_HASH_BUCKETS; i++)
+		buckets[i] = 0;
+	seg->heap_start = align_up(seg->hash_off + HAL_HASH_BUCKETS * sizeof(rtapi_u32));
+	seg->heap_top = seg->heap_start;
+	seg->free_head = 0;
+	seg->bytes_used = 0;
+	for (i = 0; i < HAL_KIND_COUNT; i++) {
+		seg->list_head[i] = 0;
+		seg->list_tail[i] = 0;
+		seg->count[i] = 0;
+	}
+}
+
+/* The first mapper initialises; others wait until it has finished. */
+static int segment_ready(struct hal_seg_hdr *seg)
+{
+	rtapi_u32 expected = 0;
+	int spins;
+
+	if (__atomic_compare_exchange_n(&seg->init_state, &expected, 1, false,
+					__ATOMIC_ACQ_REL, __ATOMIC_ACQUIRE)) {
+		hal_segment_init(seg, HAL_SEGMENT_SIZE);
+		__atomic_store_n(&seg->init_state, 2, __ATOMIC_RELEASE);
+		return 0;
+	}
+	for (spins = 0; __atomic_load_n(&seg->init_state, __ATOMIC_ACQUIRE) != 2; spins++) {
+		if (spins > 2000) {
+			rtapi_print_msg(RTAPI_MSG_ERR, "HAL segment never finished initialising\n");
+			return -EAGAIN;
+		}
+		rtapi_sleep_ns(1000000);
+	}
+	if (seg->magic != HAL_SEG_MAGIC || seg->version != HAL_LAYOUT_VERSION) {
+		rtapi_print_msg(RTAPI_MSG_ERR,
+				"HAL segment has layout version %u, this program expects %u: "
+				"stop the running HAL (halrun -U) first\n",
+				(unsigned)seg->version, (unsigned)HAL_LAYOUT_VERSION);
+		return -EINVAL;
+	}
+	return 0;
+}
+
+int hal_segment_map(void)
+{
+	void *ptr;
+	int err;
+
+	if (hal_shmem_base)
+		return 0;
+	rtapi_module_id = rtapi_init("hal_lib");
+	if (rtapi_module_id < 0) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "HAL: rtapi_init failed (%d)\n", rtapi_module_id);
+		return rtapi_module_id;
+	}
+	shmem_id = rtapi_shmem_new(HAL_KEY, rtapi_module_id, HAL_SEGMENT_SIZE);
+	if (shmem_id < 0) {
+		err = shmem_id;
+		rtapi_print_msg(RTAPI_MSG_ERR, "HAL: cannot get the HAL shared memory (%d)\n", err);
+		goto undo_init;
+	}
+	err = rtapi_shmem_getptr(shmem_id, &ptr);
+	if (err < 0)
+		goto undo_shmem;
+	err = segment_ready(ptr);
+	if (err < 0)
+		goto undo_shmem;
+	hal_shmem_base = ptr;
+	hal_seg = ptr;
+	return 0;
+
+undo_shmem:
+	rtapi_shmem_delete(shmem_id, rtapi_module_id);
+undo_init:
+	rtapi_exit(rtapi_module_id);
+	return err;
+}
+
+void hal_segment_unmap(void)
+{
+	if (!hal_shmem_base)
+		return;
+	hal_shmem_base = 0;
+	hal_seg = 0;
+	rtapi_shmem_delete(shmem_id, rtapi_module_id);
+	rtapi_exit(rtapi_module_id);
+}

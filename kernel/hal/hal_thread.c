@@ -1,0 +1,246 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
+/* hal_thread.c - HAL threads (hal_create_thread(3hal)): an RTAPI periodic task
+ * that calls its functions in order each period while threads are started.
+ * Threads are created by realtime code only; halcmd edits their function lists
+ * from userspace, which the task walks without taking the HAL mutex. */
+#include "hal_internal.h"
+
+#ifdef RTAPI
+static void run_functions(struct hal_thread_rec *t)
+{
+	long long start = rtapi_get_clocks(), prev = start, now;
+	long long t0 = rtapi_get_time();
+	rtapi_u32 off = __atomic_load_n(&t->first_entry_off, __ATOMIC_ACQUIRE);
+
+	__atomic_add_fetch(&t->cycle_seq, 1, __ATOMIC_ACQ_REL);	/* odd: running */
+	while (off) {
+		struct hal_entry_rec *e = hal_ptr(off);
+		struct hal_funct_rec *f = hal_ptr(e->funct_off);
+		hal_funct_t fn = (hal_funct_t)(unsigned long)f->funct;
+
+		fn((void *)(unsigned long)f->arg, (long)t->period_ns);
+		now = rtapi_get_clocks();
+		*f->time_ptr = (rtapi_s32)(now - prev);
+		if (*f->time_ptr > f->tmax)
+			f->tmax = *f->time_ptr;
+		prev = now;
+		off = __atomic_load_n(&e->next_off, __ATOMIC_ACQUIRE);
+	}
+	*t->time_ptr = (rtapi_s32)(prev - start);
+	if (*t->time_ptr > t->tmax)
+		t->tmax = *t->time_ptr;
+	rtapi_store_u64(&t->run_ns, t->run_ns + (rtapi_u64)(rtapi_get_time() - t0));
+	rtapi_store_u64(&t->cycles, t->cycles + 1);
+	__atomic_add_fetch(&t->cycle_seq, 1, __ATOMIC_ACQ_REL);	/* even: idle */
+}
+
+static void hal_thread_task(void *arg)
+{
+	struct hal_thread_rec *t = arg;
+
+	for (;;) {
+		if (__atomic_load_n(&hal_seg->threads_running, __ATOMIC_ACQUIRE))
+			run_functions(t);
+		rtapi_task_wait();
+	}
+}
+
+/* Base period and rounding (hal_create_thread(3hal)); returns the period or -errno. */
+static long long thread_period(const char *name, unsigned long period)
+{
+	long long base = hal_seg->base_period_ns;
+	rtapi_u64 n;
+
+	if (period < 1000) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "thread '%s': period %lu ns is too short (minimum 1000)\n",
+				name, period);
+		return -EINVAL;
+	}
+	if (hal_seg->count[HAL_KIND_THREAD] == 0) {
+		long r = rtapi_clock_set_period((long)period);
+
+		if (r < 0)	/* the clock kept the period of an earlier session */
+			r = rtapi_clock_set_period(0);
+		if (r <= 0) {
+			rtapi_print_msg(RTAPI_MSG_ERR, "thread '%s': cannot set clock period %lu ns\n",
+					name, period);
+			return -EINVAL;
+		}
+		hal_seg->base_period_ns = r;
+		base = r;
+	}
+	if ((long long)period < base) {
+		rtapi_print_msg(RTAPI_MSG_ERR,
+				"thread '%s': period %lu ns is shorter than the base period %lld ns "
+				"(create the fastest thread first)\n", name, period, base);
+		return -EINVAL;
+	}
+	n = rtapi_div_u64((rtapi_u64)period + (rtapi_u64)base / 2, (rtapi_u32)base);
+	return (long long)n * base;
+}
+
+static int create_locked(const char *name, unsigned long period, int uses_fp)
+{
+	struct hal_comp_rec *comp = hal_ptr(hal_current_comp_off);
+	struct hal_thread_rec *t;
+	long long actual;
+	int prio, i, err;
+
+	err = hal_check_lock(HAL_LOCK_LOAD, "create threads");
+	if (err)
+		return err;
+	if (!comp) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "thread '%s': call hal_init first\n", name);
+		return -EINVAL;
+	}
+	actual = thread_period(name, period);
+	if (actual < 0)
+		return (int)actual;
+	/* Rate-monotonic: each later (slower) thread one step lower. */
+	prio = rtapi_prio_highest();
+	for (i = 0; i < (int)hal_seg->count[HAL_KIND_THREAD]; i++)
+		prio = rtapi_prio_next_lower(prio);
+	t = hal_object_new(HAL_KIND_THREAD, sizeof(*t), name, hal_off(comp), &err);
+	if (!t)
+		return err;
+	t->period_ns = actual;
+	t->priority = prio;
+	t->uses_fp = uses_fp != 0;
+	err = hal_timing_objects_new(name, &t->time_ptr, &t->tmax, comp);
+	if (err)
+		goto undo_record;
+	t->task_id = rtapi_task_new(hal_thread_task, t, prio, 0, uses_fp);
+	if (t->task_id < 0) {
+		err = t->task_id;
+		rtapi_print_msg(RTAPI_MSG_ERR, "thread '%s': cannot create its task (%d)\n", name, err);
+		goto undo_timing;
+	}
+	err = rtapi_task_start(t->task_id, (unsigned long)actual);
+	if (err < 0) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "thread '%s': cannot start its task (%d)\n", name, err);
+		goto undo_task;
+	}
+	return 0;
+
+undo_task:
+	rtapi_task_delete(t->task_id);
+undo_timing:
+	hal_timing_objects_delete(name);
+undo_record:
+	hal_object_delete(&t->hdr);
+	return err;
+}
+#endif
+
+int hal_create_thread(const char *name, unsigned long period, int uses_fp)
+{
+#ifdef ULAPI
+	rtapi_print_msg(RTAPI_MSG_ERR, "thread '%s': only realtime components can create threads\n",
+			name);
+	return -EINVAL;
+#else
+	int rc;
+
+	if (!hal_seg) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "thread '%s': call hal_init first\n", name);
+		return -EINVAL;
+	}
+	hal_lock();
+	rc = create_locked(name, period, uses_fp);
+	hal_unlock();
+	return rc;
+#endif
+}
+
+void hal_thread_delete_locked(struct hal_thread_rec *t)
+{
+	rtapi_u32 off;
+
+#ifdef RTAPI
+	rtapi_task_delete(t->task_id);	/* returns once the task has stopped */
+#endif
+	for (off = t->first_entry_off; off;) {
+		struct hal_entry_rec *e = hal_ptr(off);
+
+		off = e->next_off;
+		((struct hal_funct_rec *)hal_ptr(e->funct_off))->users--;
+		hal_free_block(hal_seg, e);
+	}
+	t->first_entry_off = 0;
+	hal_timing_objects_delete(t->hdr.name);
+	hal_object_delete(&t->hdr);
+	if (hal_seg->count[HAL_KIND_THREAD] == 0)
+		hal_seg->base_period_ns = 0;
+}
+
+int hal_thread_delete(const char *name)
+{
+	struct hal_thread_rec *t;
+	int rc = 0;
+
+	if (!hal_seg)
+		return -EINVAL;
+	hal_lock();
+	t = hal_find(HAL_KIND_THREAD, name);
+#ifdef ULAPI
+	if (t) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "thread '%s' belongs to realtime code: unload its module\n",
+				name);
+		rc = -EPERM;
+	}
+#else
+	if (t)
+		hal_thread_delete_locked(t);
+#endif
+	hal_unlock();
+	if (!t) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "thread '%s' does not exist\n", name);
+		rc = -ENOENT;
+	}
+	return rc;
+}
+
+static int set_running(int running)
+{
+	int rc;
+
+	if (!hal_seg)
+		return -EINVAL;
+	hal_lock();
+	rc = hal_check_lock(HAL_LOCK_RUN, running ? "start threads" : "stop threads");
+	if (!rc) {
+		__atomic_store_n(&hal_seg->threads_running, running, __ATOMIC_RELEASE);
+		if (!running)
+			hal_threads_quiesce();
+	}
+	hal_unlock();
+	return rc;
+}
+
+int hal_start_threads(void)
+{
+	return set_running(1);
+}
+
+int hal_stop_threads(void)
+{
+	return set_running(0);
+}
+
+void hal_threads_quiesce(void)
+{
+	struct hal_obj_hdr *o;
+
+	for (o = hal_first(HAL_KIND_THREAD); o; o = hal_next(o)) {
+		struct hal_thread_rec *t = (struct hal_thread_rec *)o;
+		rtapi_u32 seq = __atomic_load_n(&t->cycle_seq, __ATOMIC_ACQUIRE);
+		int waited;
+
+		/* Bounded: a thread stuck in a function must not hang configuration. */
+		for (waited = 0; (seq & 1) && waited < 10000; waited++) {
+			rtapi_sleep_ns(100000);
+			if (__atomic_load_n(&t->cycle_seq, __ATOMIC_ACQUIRE) != seq)
+				break;
+		}
+	}
+}
