@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
+# make bench: the three figures of the foundation issue, from the standard
+# workloads of ../shared/bench/gen-workload.sh. Prints numbers; never fails on them.
+#   (a) halrun -f wall time for the load workload at N = 1000, 4000, 16000 + growth exponent
+#   (b) per-function cost (ns) for the funct workload at N = 1000
+#   (c) samples/s halsampler drains from the sample workload with 8 channels, + overruns
+set -u
+build=$(cd "${1:-build}" && pwd)
+here=$(cd "$(dirname "$0")" && pwd)
+gen=${GEN_WORKLOAD:-$here/../../shared/bench/gen-workload.sh}
+[ -x "$gen" ] || gen=/work/shared/bench/gen-workload.sh
+export PATH="$build/bin:$PATH"
+export RTAPI_INSTANCE="bench-$$"
+tmp=$(mktemp -d)
+trap 'halrun -U >/dev/null 2>&1; rm -rf "$tmp"' EXIT
+
+now() { date +%s.%N; }
+calc() { awk "BEGIN { print $* }"; }
+
+echo "== (a) config load: halrun -f of the 'load' workload"
+declare -A secs
+for n in 1000 4000 16000; do
+	"$gen" load $n > "$tmp/load-$n.hal"
+	t0=$(now)
+	if ! halrun -f "$tmp/load-$n.hal" > "$tmp/load-$n.out" 2>&1; then
+		echo "N=$n: halrun failed:"; tail -3 "$tmp/load-$n.out"; continue
+	fi
+	t1=$(now)
+	secs[$n]=$(calc "$t1 - $t0")
+	printf "N=%-6d %8.3f s\n" $n "${secs[$n]}"
+done
+if [ -n "${secs[1000]:-}" ] && [ -n "${secs[16000]:-}" ]; then
+	exp=$(calc "log(${secs[16000]} / ${secs[1000]}) / log(16)")
+	printf "growth exponent (1000 -> 16000): %.2f  (1 = linear, 2 = quadratic)\n" "$exp"
+fi
+
+echo "== (b) per-function cost: 'funct' workload, N=1000, 1 ms thread"
+"$gen" funct 1000 > "$tmp/funct.hal"
+if halcmd -f "$tmp/funct.hal" > "$tmp/funct.out" 2>&1; then
+	sleep 0.5
+	"$build/bin/thread_cost" bench 3
+else
+	echo "setup failed:"; tail -3 "$tmp/funct.out"
+fi
+halrun -U >/dev/null 2>&1
+
+echo "== (c) halsampler throughput: 'sample' workload, 8 channels, 100 us thread"
+"$gen" sample 8 > "$tmp/sample.hal"
+if halcmd -f "$tmp/sample.hal" > "$tmp/sample.out" 2>&1; then
+	count=30000
+	t0=$(now)
+	halsampler -c 0 -n $count > "$tmp/samples.txt" 2> "$tmp/sampler.err"
+	t1=$(now)
+	lines=$(grep -vc overrun "$tmp/samples.txt")
+	overruns=$(grep -c overrun "$tmp/samples.txt" "$tmp/sampler.err" | awk -F: '{s+=$2} END {print s+0}')
+	rate=$(calc "$lines / ($t1 - $t0)")
+	printf "%d samples in %.2f s: %.0f samples/s drained, %d overrun reports\n" \
+		"$lines" "$(calc "$t1 - $t0")" "$rate" "$overruns"
+else
+	echo "setup failed:"; tail -3 "$tmp/sample.out"
+fi
