@@ -5,7 +5,7 @@ BUILD ?= build
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?=
 
-.PHONY: all deps configure build test unit-test hal-test demo bench install clean
+.PHONY: all deps configure build test unit-test hal-test kmod kernel-test demo bench install clean
 
 all: build
 
@@ -27,7 +27,18 @@ unit-test: build
 hal-test: build
 	tests/run-hal-tests.sh --build $(BUILD) --flavor sim
 
-test: unit-test hal-test
+# Kernel flavor: modules built against Debian's kernels, smoke-tested inside qemu.
+KERNEL_RELEASES ?= $(shell ls -d /usr/src/linux-headers-*-amd64 2>/dev/null | sed 's|.*/linux-headers-||')
+
+kmod:
+	$(MAKE) -f kernel/Makefile.kmod
+
+kernel-test: build
+	KERNEL_TEST_RT=1 scripts/kernel-test-deps
+	tests/kernel/run-kernel-tests.sh
+	tests/kernel/run-kernel-tests.sh $$(ls -d /usr/src/linux-headers-*-rt-amd64 | sed 's|.*/linux-headers-||' | sort -V | tail -1)
+
+test: unit-test hal-test kernel-test
 
 demo: build
 	demo/run-demo.sh $(BUILD)

@@ -163,6 +163,17 @@ static void comp_delete_locked(struct hal_comp_rec *comp)
 	hal_free_owned(hal_seg, comp_off);
 }
 
+/* Was 'comp' made by this address space? halcmd removes components that a dead
+ * process left behind; those never counted among this process's users. */
+static bool comp_is_local(const struct hal_comp_rec *comp)
+{
+#ifdef ULAPI
+	return !comp->is_realtime && comp->pid == (rtapi_s32)rtapi_getpid();
+#else
+	return comp->is_realtime;
+#endif
+}
+
 static void local_user_gone(void)
 {
 	if (--hal_local_users <= 0) {
@@ -174,6 +185,7 @@ static void local_user_gone(void)
 int hal_exit(int comp_id)
 {
 	struct hal_comp_rec *comp;
+	bool local;
 
 	if (!hal_seg) {
 		rtapi_print_msg(RTAPI_MSG_ERR, "hal_exit(%d): HAL is not initialised\n", comp_id);
@@ -194,9 +206,11 @@ int hal_exit(int comp_id)
 		return -EPERM;
 	}
 #endif
+	local = comp_is_local(comp);
 	comp_delete_locked(comp);
 	hal_unlock();
-	local_user_gone();
+	if (local)
+		local_user_gone();
 	return 0;
 }
 

@@ -38,6 +38,13 @@ void hal_release_mutex(void)
 		rtapi_mutex_give(&hal_seg->mutex);
 }
 
+/* hal_query.h promises -EACCES for a locked HAL, so halcmd can tell it from -EPERM
+ * (output pin, read-only parameter, signal with a writer). */
+static int check_params_lock(const char *what)
+{
+	return hal_check_lock(HAL_LOCK_PARAMS, what) ? -EACCES : 0;
+}
+
 static int need_segment(void)
 {
 	if (hal_seg)
@@ -166,8 +173,9 @@ int hal_query_comps(int (*cb)(const struct hal_comp_info *, void *), void *ctx)
 	if (rc)
 		return rc;
 	hal_lock();
-	for (o = hal_first(HAL_KIND_COMP); o; o = hal_next(o), n++) {
+	for (o = hal_first(HAL_KIND_COMP); o; o = hal_next(o)) {
 		comp_info((struct hal_comp_rec *)o, &info);
+		n++;
 		if (cb(&info, ctx))
 			break;
 	}
@@ -184,8 +192,9 @@ int hal_query_pins(int (*cb)(const struct hal_pin_info *, void *), void *ctx)
 	if (rc)
 		return rc;
 	hal_lock();
-	for (o = hal_first(HAL_KIND_PIN); o; o = hal_next(o), n++) {
+	for (o = hal_first(HAL_KIND_PIN); o; o = hal_next(o)) {
 		pin_info((struct hal_pin_rec *)o, &info);
+		n++;
 		if (cb(&info, ctx))
 			break;
 	}
@@ -202,8 +211,9 @@ int hal_query_params(int (*cb)(const struct hal_param_info *, void *), void *ctx
 	if (rc)
 		return rc;
 	hal_lock();
-	for (o = hal_first(HAL_KIND_PARAM); o; o = hal_next(o), n++) {
+	for (o = hal_first(HAL_KIND_PARAM); o; o = hal_next(o)) {
 		param_info((struct hal_param_rec *)o, &info);
+		n++;
 		if (cb(&info, ctx))
 			break;
 	}
@@ -220,8 +230,9 @@ int hal_query_sigs(int (*cb)(const struct hal_sig_info *, void *), void *ctx)
 	if (rc)
 		return rc;
 	hal_lock();
-	for (o = hal_first(HAL_KIND_SIG); o; o = hal_next(o), n++) {
+	for (o = hal_first(HAL_KIND_SIG); o; o = hal_next(o)) {
 		sig_info((struct hal_sig_rec *)o, &info);
+		n++;
 		if (cb(&info, ctx))
 			break;
 	}
@@ -238,8 +249,9 @@ int hal_query_functs(int (*cb)(const struct hal_funct_info *, void *), void *ctx
 	if (rc)
 		return rc;
 	hal_lock();
-	for (o = hal_first(HAL_KIND_FUNCT); o; o = hal_next(o), n++) {
+	for (o = hal_first(HAL_KIND_FUNCT); o; o = hal_next(o)) {
 		funct_info((struct hal_funct_rec *)o, &info);
+		n++;
 		if (cb(&info, ctx))
 			break;
 	}
@@ -256,8 +268,9 @@ int hal_query_threads(int (*cb)(const struct hal_thread_info *, void *), void *c
 	if (rc)
 		return rc;
 	hal_lock();
-	for (o = hal_first(HAL_KIND_THREAD); o; o = hal_next(o), n++) {
+	for (o = hal_first(HAL_KIND_THREAD); o; o = hal_next(o)) {
 		thread_info((struct hal_thread_rec *)o, &info);
+		n++;
 		if (cb(&info, ctx))
 			break;
 	}
@@ -275,9 +288,10 @@ int hal_query_thread_functs(const char *thread_name, int (*cb)(const char *, voi
 		return rc;
 	hal_lock();
 	t = hal_find(HAL_KIND_THREAD, thread_name);
-	for (off = t ? t->first_entry_off : 0; off; n++) {
+	for (off = t ? t->first_entry_off : 0; off;) {
 		struct hal_entry_rec *e = hal_ptr(off);
 
+		n++;
 		if (cb(((struct hal_obj_hdr *)hal_ptr(e->funct_off))->name, ctx))
 			break;
 		off = e->next_off;
@@ -379,7 +393,7 @@ int hal_set_pin_value(const char *name, const union hal_value *v)
 	if (need_segment())
 		return -EINVAL;
 	hal_lock();
-	rc = hal_check_lock(HAL_LOCK_PARAMS, "set pins");
+	rc = check_params_lock("set pins");
 	pin = rc ? 0 : hal_find(HAL_KIND_PIN, name);
 	if (rc) {
 		/* locked: message printed */
@@ -409,7 +423,7 @@ int hal_set_param_value(const char *name, const union hal_value *v)
 	if (need_segment())
 		return -EINVAL;
 	hal_lock();
-	rc = hal_check_lock(HAL_LOCK_PARAMS, "set parameters");
+	rc = check_params_lock("set parameters");
 	param = rc ? 0 : hal_find(HAL_KIND_PARAM, name);
 	if (rc) {
 		/* locked: message printed */
@@ -434,7 +448,7 @@ int hal_set_sig_value(const char *name, const union hal_value *v)
 	if (need_segment())
 		return -EINVAL;
 	hal_lock();
-	rc = hal_check_lock(HAL_LOCK_PARAMS, "set signals");
+	rc = check_params_lock("set signals");
 	sig = rc ? 0 : hal_find(HAL_KIND_SIG, name);
 	if (rc) {
 		/* locked: message printed */

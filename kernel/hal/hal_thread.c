@@ -57,10 +57,12 @@ static long long thread_period(const char *name, unsigned long period)
 		return -EINVAL;
 	}
 	if (hal_seg->count[HAL_KIND_THREAD] == 0) {
-		long r = rtapi_clock_set_period((long)period);
+		/* The clock may still run from an earlier session in this address space:
+		 * keep it, as asking again only gets an error message from RTAPI. */
+		long r = rtapi_clock_set_period(0);
 
-		if (r < 0)	/* the clock kept the period of an earlier session */
-			r = rtapi_clock_set_period(0);
+		if (r == 0)
+			r = rtapi_clock_set_period((long)period);
 		if (r <= 0) {
 			rtapi_print_msg(RTAPI_MSG_ERR, "thread '%s': cannot set clock period %lu ns\n",
 					name, period);
@@ -147,6 +149,8 @@ int hal_create_thread(const char *name, unsigned long period, int uses_fp)
 	}
 	hal_lock();
 	rc = create_locked(name, period, uses_fp);
+	if (rc < 0 && hal_seg->count[HAL_KIND_THREAD] == 0)
+		hal_seg->base_period_ns = 0;	/* a refused first thread sets no base period */
 	hal_unlock();
 	return rc;
 #endif

@@ -1,0 +1,201 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
+/* emc_module_helper - lets halcmd load and unload the kernel flavor's realtime
+ * modules without being root. Installed setuid root, so it trusts nothing from its
+ * caller: only whitelisted module names, only from the compiled-in directory
+ * (<EMC_MODULE_DIR>/<kernel release>/NAME.ko), only "param[=value]" arguments of
+ * printable characters, and insmod/rmmod by absolute path with an empty environment
+ * and no capability but CAP_SYS_MODULE.
+ *   emc_module_helper insert NAME [PARAM[=VALUE]...]
+ *   emc_module_helper remove NAME
+ * Exit status: 0 done, 1 insmod/rmmod failed (its message is on stderr), 2 refused. */
+#define _GNU_SOURCE
+#include <errno.h>
+#include <grp.h>
+#include <linux/capability.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/prctl.h>
+#include <sys/utsname.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include "emc_module_whitelist.h"	/* EMC_MODULE_WHITELIST: "name", ... (generated) */
+
+#ifndef EMC_MODULE_DIR
+#error "EMC_MODULE_DIR (module base directory) must be compiled in"
+#endif
+#ifndef EMC_INSMOD
+#define EMC_INSMOD "/sbin/insmod"
+#endif
+#ifndef EMC_RMMOD
+#define EMC_RMMOD "/sbin/rmmod"
+#endif
+
+#define MAX_NAME 31	/* RTAPI_NAME_LEN */
+#define MAX_ARG 1024
+#define MAX_ARGS 64
+
+static const char *const whitelist[] = { EMC_MODULE_WHITELIST };
+
+static int refuse(const char *what, const char *why)
+{
+	fprintf(stderr, "emc_module_helper: %s: %s\n", what, why);
+	return 2;
+}
+
+static int name_ok(const char *name)
+{
+	size_t i, n = strlen(name);
+
+	if (n == 0 || n > MAX_NAME)
+		return 0;
+	for (i = 0; i < n; i++)
+		if (!((name[i] >= 'a' && name[i] <= 'z') || (name[i] >= '0' && name[i] <= '9') ||
+		      name[i] == '_'))
+			return 0;
+	return 1;
+}
+
+static int whitelisted(const char *name)
+{
+	size_t i;
+
+	for (i = 0; i < sizeof(whitelist) / sizeof(whitelist[0]); i++)
+		if (strcmp(whitelist[i], name) == 0)
+			return 1;
+	return 0;
+}
+
+/* "param" or "param=value": a lowercase parameter name (never an insmod option such
+ * as -f), then printable ASCII only, so nothing reaches the kernel log unescaped. */
+static const char *arg_problem(const char *arg)
+{
+	size_t i, n = strlen(arg);
+
+	if (n > MAX_ARG)
+		return "longer than 1024 characters";
+	for (i = 0; i < n && arg[i] != '='; i++)
+		if (!((arg[i] >= 'a' && arg[i] <= 'z') || (arg[i] >= '0' && arg[i] <= '9') ||
+		      arg[i] == '_'))
+			return "not of the form param=value (param: a-z 0-9 _)";
+	if (i == 0)
+		return "not of the form param=value (param: a-z 0-9 _)";
+	for (; i < n; i++)
+		if ((unsigned char)arg[i] < 0x20 || (unsigned char)arg[i] > 0x7e)
+			return "contains a non-printable character";
+	return NULL;
+}
+
+/* Become root for real (a setuid binary has only the effective uid), keep no
+ * supplementary groups, and drop every capability but CAP_SYS_MODULE from the
+ * bounding set so insmod/rmmod get nothing else. Without privileges (a test build
+ * run by a user) this is skipped and insmod reports the permission error itself. */
+static int drop_privileges(void)
+{
+	int cap;
+
+	if (geteuid() != 0)
+		return 0;
+	if (setgroups(0, NULL) || setresgid(0, 0, 0) || setresuid(0, 0, 0)) {
+		perror("emc_module_helper: cannot set ids");
+		return -1;
+	}
+	for (cap = 0; prctl(PR_CAPBSET_READ, cap, 0, 0, 0) >= 0; cap++)
+		if (cap != CAP_SYS_MODULE && prctl(PR_CAPBSET_DROP, cap, 0, 0, 0) && errno != EINVAL) {
+			perror("emc_module_helper: cannot drop capabilities");
+			return -1;
+		}
+	return 0;
+}
+
+static int run(char **argv)
+{
+	char *const envp[] = { NULL };
+	int status;
+	pid_t pid;
+
+	fflush(NULL);
+	pid = fork();
+	if (pid < 0) {
+		perror("emc_module_helper: fork");
+		return 1;
+	}
+	if (pid == 0) {
+		execve(argv[0], argv, envp);
+		fprintf(stderr, "emc_module_helper: cannot run %s: %s\n", argv[0], strerror(errno));
+		_exit(127);
+	}
+	while (waitpid(pid, &status, 0) < 0)
+		if (errno != EINTR) {
+			perror("emc_module_helper: waitpid");
+			return 1;
+		}
+	if (WIFEXITED(status) && WEXITSTATUS(status) == 0)
+		return 0;
+	fprintf(stderr, "emc_module_helper: %s %s failed (%s %d)\n",
+		strrchr(argv[0], '/') ? strrchr(argv[0], '/') + 1 : argv[0], argv[1],
+		WIFEXITED(status) ? "exit status" : "signal",
+		WIFEXITED(status) ? WEXITSTATUS(status) : WTERMSIG(status));
+	return 1;
+}
+
+static int usage(void)
+{
+	fprintf(stderr, "usage: emc_module_helper insert NAME [PARAM=VALUE...]\n"
+			"       emc_module_helper remove NAME\n");
+	return 2;
+}
+
+int main(int argc, char **argv)
+{
+	static char path[4096];
+	char *child[MAX_ARGS + 3];
+	struct utsname u;
+	const char *name;
+	int i, insert;
+
+	if (argc < 3)
+		return usage();
+	if (strcmp(argv[1], "insert") == 0)
+		insert = 1;
+	else if (strcmp(argv[1], "remove") == 0)
+		insert = 0;
+	else
+		return usage();
+	name = argv[2];
+	if (!name_ok(name))
+		return refuse("module name", "must be 1 to 31 characters of a-z 0-9 _");
+	if (!whitelisted(name))
+		return refuse(name, "not a HAL realtime module");
+	if (!insert && argc > 3)
+		return refuse(name, "remove takes no arguments");
+	if (argc - 3 > MAX_ARGS)
+		return refuse(name, "more than 64 arguments");
+	for (i = 3; i < argc; i++) {
+		const char *why = arg_problem(argv[i]);
+
+		if (why)
+			return refuse(name, why);
+	}
+	if (drop_privileges())
+		return 2;
+	if (insert) {
+		if (uname(&u))
+			return refuse(name, "cannot read the kernel release");
+		if (snprintf(path, sizeof(path), "%s/%s/%s.ko", EMC_MODULE_DIR, u.release, name) >=
+		    (int)sizeof(path))
+			return refuse(name, "module path too long");
+		if (access(path, R_OK))
+			return refuse(path, "no such module for this kernel (is the kernel flavor installed?)");
+		child[0] = (char *)EMC_INSMOD;
+		child[1] = path;
+		for (i = 3; i < argc; i++)
+			child[i - 1] = argv[i];
+		child[argc - 1] = NULL;
+	} else {
+		child[0] = (char *)EMC_RMMOD;
+		child[1] = (char *)name;
+		child[2] = NULL;
+	}
+	return run(child);
+}

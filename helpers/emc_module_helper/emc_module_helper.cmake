@@ -1,0 +1,20 @@
+# emc_module_helper_executable(TARGET MODULE_DIR INSMOD RMMOD): the helper with its
+# whitelist (modules.manifest + rtapi + hal_lib) and paths compiled in. Used by this
+# directory's CMakeLists.txt (the installed helper) and by the unit tests (a copy that
+# runs fake insmod/rmmod scripts).
+function(emc_module_helper_executable target module_dir insmod rmmod)
+  file(STRINGS ${CMAKE_SOURCE_DIR}/modules.manifest lines REGEX "^[a-z]")
+  set(names "\"rtapi\", \"hal_lib\"")
+  foreach(line IN LISTS lines)
+    string(REGEX MATCH "^[a-z0-9_]+" name "${line}")
+    string(APPEND names ", \"${name}\"")
+  endforeach()
+  set(gen ${CMAKE_CURRENT_BINARY_DIR}/${target}_gen)
+  file(CONFIGURE OUTPUT ${gen}/emc_module_whitelist.h
+       CONTENT "/* generated from modules.manifest */\n#define EMC_MODULE_WHITELIST ${names}\n")
+  add_executable(${target} ${CMAKE_SOURCE_DIR}/helpers/emc_module_helper/emc_module_helper.c)
+  target_include_directories(${target} PRIVATE ${gen})
+  target_compile_definitions(${target} PRIVATE EMC_MODULE_DIR="${module_dir}"
+                             EMC_INSMOD="${insmod}" EMC_RMMOD="${rmmod}")
+  target_compile_options(${target} PRIVATE -Wall -Wextra)
+endfunction()

@@ -1,0 +1,152 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
+/* streamer.c - write data from a shared-memory FIFO to HAL pins in real time,
+ * streamer(9): loadrt streamer depth=depth1[,depth2...] cfg=string1[,string2...].
+ * Per FIFO N: output pins streamer.N.pin.M (typed by cfg), streamer.N.curr-depth
+ * (s32 out), streamer.N.empty (bit out), streamer.N.enable (bit in, default TRUE),
+ * streamer.N.underruns (s32 read/write pin, listed under PINS on the page);
+ * function streamer.N. halstreamer(1) fills the FIFO (layout in streamer_fifo.h). */
+#include "rtapi.h"
+#include "rtapi_app.h"
+#include "hal.h"
+#include "streamer_fifo.h"
+#include "fifo_module.h"
+
+MODULE_LICENSE("GPL");
+MODULE_DESCRIPTION("stream data from halstreamer into HAL in real time");
+
+static char *cfg[HAL_FIFO_MAX_FIFOS];
+RTAPI_MP_ARRAY_STRING(cfg, HAL_FIFO_MAX_FIFOS, "pin types of each FIFO: f, b, s, u per pin");
+static int depth[HAL_FIFO_MAX_FIFOS];
+RTAPI_MP_ARRAY_INT(depth, HAL_FIFO_MAX_FIFOS, "samples each FIFO holds");
+
+struct streamer {		/* in hal_malloc() memory, one per FIFO */
+	struct hal_fifo_hdr *hdr;	/* shared memory: update() is the consumer */
+	union hal_fifo_value *data;
+	hal_s32_t *curr_depth;		/* written by update() */
+	hal_bit_t *empty;		/* written by update() */
+	hal_bit_t *enable;		/* read by update() */
+	hal_s32_t *underruns;		/* I/O pin: update() counts up, setp resets */
+	int num_pins;
+	char type[HAL_FIFO_MAX_PINS];	/* enum hal_fifo_type per pin */
+	union fifo_pin_ptr pins[HAL_FIFO_MAX_PINS];
+};
+
+static int module_id;
+static int comp_id;
+static struct fifo_shm shm[HAL_FIFO_MAX_FIFOS];	/* init/exit only: what to delete */
+
+/* One record per call; with none available the pins keep their values and an
+ * underrun is counted. */
+static void update(void *arg, long period_ns)
+{
+	struct streamer *s = arg;
+	const union hal_fifo_value *rec;
+	rtapi_u32 used;
+	int m;
+
+	if (*s->enable) {
+		rec = hal_fifo_read_slot(s->hdr, s->data);
+		if (!rec) {
+			*s->underruns = (hal_s32_t)((rtapi_u32)*s->underruns + 1u);
+		} else {
+			rec += HAL_FIFO_REC_HDR_WORDS;
+			for (m = 0; m < s->num_pins; m++) {
+				switch (s->type[m]) {
+				case HAL_FIFO_FLOAT:
+					*s->pins[m].f = rec[m].f;
+					break;
+				case HAL_FIFO_BIT:
+					*s->pins[m].b = rec[m].u != 0;
+					break;
+				case HAL_FIFO_S32:
+					*s->pins[m].s = (hal_s32_t)rec[m].s;
+					break;
+				default:
+					*s->pins[m].u = (rtapi_u32)rec[m].u;
+					break;
+				}
+			}
+			hal_fifo_read_done(s->hdr);
+		}
+	}
+	used = hal_fifo_used(s->hdr);
+	*s->curr_depth = (hal_s32_t)used;
+	*s->empty = used == 0;
+}
+
+static int streamer_export(struct streamer *s, int n)
+{
+	char fn[HAL_NAME_LEN + 1];
+	int m, err;
+
+	err = fifo_shm_create(&shm[n], "streamer", module_id, STREAMER_SHMEM_KEY, n, cfg[n], depth[n]);
+	if (err)
+		return err;
+	s->hdr = shm[n].hdr;
+	s->data = shm[n].data;
+	s->num_pins = hal_fifo_cfg_pins(cfg[n]);
+	for (m = 0; m < s->num_pins; m++)
+		s->type[m] = hal_fifo_type_of(cfg[n][m]);
+	err = fifo_pins_export(s->pins, comp_id, "streamer", n, cfg[n], HAL_OUT);
+	if (!err)
+		err = hal_pin_s32_newf(HAL_OUT, &s->curr_depth, comp_id, "streamer.%d.curr-depth", n);
+	if (!err)
+		err = hal_pin_bit_newf(HAL_OUT, &s->empty, comp_id, "streamer.%d.empty", n);
+	if (!err)
+		err = hal_pin_bit_newf(HAL_IN, &s->enable, comp_id, "streamer.%d.enable", n);
+	if (!err)
+		err = hal_pin_s32_newf(HAL_IO, &s->underruns, comp_id, "streamer.%d.underruns", n);
+	if (err)
+		return err;
+	*s->enable = true;
+	*s->empty = true;
+	rtapi_snprintf(fn, sizeof(fn), "streamer.%d", n);
+	return hal_export_funct(fn, update, s, 1, 0, comp_id);
+}
+
+static void remove_all(void)
+{
+	int n;
+
+	hal_exit(comp_id);	/* first: no thread runs update() any more */
+	for (n = 0; n < HAL_FIFO_MAX_FIFOS; n++)
+		fifo_shm_destroy(&shm[n], module_id);
+	rtapi_exit(module_id);
+}
+
+int rtapi_app_main(void)
+{
+	struct streamer *all;
+	int num_fifos, n, err;
+
+	num_fifos = fifo_module_count("streamer", cfg, depth);
+	if (num_fifos < 0)
+		return num_fifos;
+	module_id = rtapi_init("streamer");	/* owns the shared memory */
+	if (module_id < 0) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "streamer: rtapi_init failed (%d)\n", module_id);
+		return module_id;
+	}
+	comp_id = hal_init("streamer");
+	if (comp_id < 0) {
+		rtapi_exit(module_id);
+		return comp_id;
+	}
+	all = hal_malloc(num_fifos * (long)sizeof(*all));
+	err = all ? 0 : -ENOMEM;
+	if (!all)
+		rtapi_print_msg(RTAPI_MSG_ERR, "streamer: out of HAL memory for %d FIFOs\n", num_fifos);
+	for (n = 0; !err && n < num_fifos; n++)
+		err = streamer_export(&all[n], n);
+	if (err) {
+		remove_all();
+		return err;
+	}
+	hal_ready(comp_id);
+	return 0;
+}
+
+void rtapi_app_exit(void)
+{
+	remove_all();
+}

@@ -1,0 +1,28 @@
+#!/bin/sh
+# kmod-manifest.sh SRCROOT BUILDDIR - prints the components' kbuild lines from
+# modules.manifest and links their sources into BUILDDIR (kernel/Makefile.kmod).
+# A module whose only source is NAME.c is built from it directly; otherwise its
+# objects are listed as NAME-y (a source may then not be called NAME.c).
+set -eu
+src=$1 build=$2
+awk '!/^[ \t]*(#|$)/ { print }' "$src/modules.manifest" | while read -r name fp sources; do
+	case $name in *[!a-z0-9_]*|'') echo "modules.manifest: bad module name '$name'" >&2; exit 1;; esac
+	case $fp in fp|nofp) ;; *) echo "modules.manifest: $name: '$fp' is not fp or nofp" >&2; exit 1;; esac
+	objs=
+	for s in $sources; do
+		mkdir -p "$build/$(dirname "$s")"
+		ln -sfn "$src/kernel/components/$s" "$build/$s"
+		objs="$objs ${s%.c}.o"
+	done
+	echo "obj-m += $name.o"
+	if [ "$sources" != "$name.c" ]; then
+		case " $sources " in *" $name.c "*)
+			echo "modules.manifest: $name: a multi-file module may not have a source $name.c" >&2
+			exit 1;;
+		esac
+		echo "$name-y :=$objs"
+	fi
+	if [ "$fp" = fp ]; then
+		for o in $objs; do echo "\$(eval \$(call fp_object,$o))"; done
+	fi
+done

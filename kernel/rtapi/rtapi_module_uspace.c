@@ -1,0 +1,72 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
+/* rtapi_module_uspace.c - rtapi_init/rtapi_exit (rtapi_init(3rtapi), rtapi_exit(3rtapi))
+ * for the simulated-realtime flavor: a per-process table of module names. Ids are
+ * only meaningful inside the process that got them. */
+#include <pthread.h>
+#include <string.h>
+#include <unistd.h>
+#include "rtapi.h"
+#include "rtapi_uspace.h"
+
+struct rtapi_module_rec {
+	int in_use;
+	char name[RTAPI_NAME_LEN + 1];	/* truncated to RTAPI_NAME_LEN */
+};
+
+static pthread_mutex_t module_lock = PTHREAD_MUTEX_INITIALIZER;
+static struct rtapi_module_rec modules[RTAPI_MAX_MODULES + 1];	/* [0] unused */
+
+int rtapi_init(const char *modname)
+{
+	int id;
+
+	pthread_mutex_lock(&module_lock);
+	for (id = 1; id <= RTAPI_MAX_MODULES; id++)
+		if (!modules[id].in_use)
+			break;
+	if (id > RTAPI_MAX_MODULES) {
+		pthread_mutex_unlock(&module_lock);
+		rtapi_print_msg(RTAPI_MSG_ERR, "rtapi: rtapi_init('%s') failed: all %d module slots in use\n",
+				modname ? modname : "", RTAPI_MAX_MODULES);
+		return -ENOMEM;
+	}
+	modules[id].in_use = 1;
+	if (modname && modname[0])
+		rtapi_snprintf(modules[id].name, sizeof(modules[id].name), "%s", modname);
+	else	/* unnamed modules get a name that says where they came from */
+		rtapi_snprintf(modules[id].name, sizeof(modules[id].name), "module%d", id);
+	pthread_mutex_unlock(&module_lock);
+	rtapi_print_msg(RTAPI_MSG_DBG, "rtapi: module '%s' is id %d\n", modules[id].name, id);
+	return id;
+}
+
+int rtapi_module_is_valid(int module_id)
+{
+	int ok;
+
+	if (module_id < 1 || module_id > RTAPI_MAX_MODULES)
+		return 0;
+	pthread_mutex_lock(&module_lock);
+	ok = modules[module_id].in_use;
+	pthread_mutex_unlock(&module_lock);
+	return ok;
+}
+
+int rtapi_exit(int module_id)
+{
+	if (!rtapi_module_is_valid(module_id)) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "rtapi: rtapi_exit(%d): no such module\n", module_id);
+		return -EINVAL;
+	}
+	rtapi_shmem_module_exit(module_id);	/* what the module forgot to delete */
+	pthread_mutex_lock(&module_lock);
+	modules[module_id].in_use = 0;
+	modules[module_id].name[0] = '\0';
+	pthread_mutex_unlock(&module_lock);
+	return 0;
+}
+
+long rtapi_getpid(void)
+{
+	return (long)getpid();
+}

@@ -1,0 +1,2 @@
+halrun -k -f usr.hal
+echo "exit $?"

@@ -1,0 +1,2 @@
+halrun -k -f errors.hal
+echo "exit $?"

@@ -1,0 +1,2 @@
+printf 'echo a\nexit\necho b\n' | halrun -f
+echo "exit $?"

@@ -1,0 +1,5 @@
+halrun -f build.hal || echo "build failed"
+halrun -f resave.hal > "$TEST_TMPDIR/stdout.hal" || echo "resave failed"
+cmp "$TEST_TMPDIR/first.hal" "$TEST_TMPDIR/second.hal" && echo "save all: identical after a round trip"
+cmp "$TEST_TMPDIR/first.hal" "$TEST_TMPDIR/stdout.hal" && echo "save (no argument) = save all"
+cat "$TEST_TMPDIR/first.hal"

@@ -1,0 +1,1 @@
+halrun -s -f show.hal 2>&1 | sed -E 's/[0-9a-f]{16}/XXXXXXXXXXXXXXXX/g'

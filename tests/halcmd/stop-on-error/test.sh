@@ -1,0 +1,4 @@
+halrun -f bad.hal
+echo "exit $?"
+halrun -k -f bad.hal
+echo "exit $?"

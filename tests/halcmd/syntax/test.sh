@@ -1,0 +1,2 @@
+halrun -k -f syntax.hal
+echo "exit $?"

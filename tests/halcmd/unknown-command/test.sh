@@ -1,0 +1,4 @@
+halrun -k -f bad.hal
+echo "exit $?"
+halcmd frobnicate
+echo "exit $?"

@@ -1,0 +1,26 @@
+#!/bin/busybox sh
+# init.sh - /init of the kernel-test VM: mounts the basics, runs every case under
+# /tests/cases in order and powers off. Each case prints its own lines; this prints
+#   KTEST <case> PASS|FAIL
+# per case and "KTEST-DONE <passed> <failed>" last, which the host script parses.
+/bin/busybox --install -s /bin
+mount -t proc proc /proc
+mount -t sysfs sysfs /sys
+mount -t devtmpfs devtmpfs /dev
+export PATH=/bin:/sbin:/tests PATH_MOD=/lib/rtmod
+echo
+pass=0 fail=0
+for t in /tests/cases/*.sh; do
+	name=${t##*/}; name=${name%.sh}
+	echo "KTEST-BEGIN $name"
+	if sh -e "$t"; then
+		echo "KTEST $name PASS"; pass=$((pass + 1))
+	else
+		echo "KTEST $name FAIL"; fail=$((fail + 1))
+	fi
+	# leave a clean kernel for the next case whatever this one did
+	for m in $(lsmod | awk 'NR > 1 && $1 != "rtapi" && $1 != "hal_lib" { print $1 }'); do rmmod "$m"; done
+	rmmod hal_lib 2>/dev/null; rmmod rtapi 2>/dev/null
+done
+echo "KTEST-DONE $pass $fail"
+poweroff -f

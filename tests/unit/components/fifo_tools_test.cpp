@@ -1,0 +1,177 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// halsampler/halstreamer: option parsing, output format (RULINGS.md), input lines.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "sample_format.hpp"
+#include "sampler_options.hpp"
+#include "stream_parse.hpp"
+
+namespace {
+
+// argv-like storage for the option parsers.
+struct Args {
+    std::vector<std::string> text;
+    std::vector<char*> ptrs;
+    Args(std::initializer_list<const char*> a) : text(a.begin(), a.end())
+    {
+        for (auto& s : text)
+            ptrs.push_back(s.data());
+    }
+    std::span<char* const> span() const { return {ptrs.data(), ptrs.size()}; }
+};
+
+TEST(HalsamplerOptions, DefaultsReadFifoZeroForever)
+{
+    Args a{"halsampler"};
+    auto o = hal::parse_sampler_options(a.span());
+    ASSERT_TRUE(o);
+    EXPECT_EQ(o->channel, 0);
+    EXPECT_EQ(o->count, 0u);
+    EXPECT_FALSE(o->tag);
+    EXPECT_EQ(o->filename, "");
+}
+
+TEST(HalsamplerOptions, TakesSeparateAndAttachedValues)
+{
+    Args a{"halsampler", "-c", "2", "-n10", "-t", "out.txt"};
+    auto o = hal::parse_sampler_options(a.span());
+    ASSERT_TRUE(o);
+    EXPECT_EQ(o->channel, 2);
+    EXPECT_EQ(o->count, 10u);
+    EXPECT_TRUE(o->tag);
+    EXPECT_EQ(o->filename, "out.txt");
+}
+
+TEST(HalsamplerOptions, CombinesFlags)
+{
+    Args a{"halsampler", "-tn", "5"};
+    auto o = hal::parse_sampler_options(a.span());
+    ASSERT_TRUE(o);
+    EXPECT_TRUE(o->tag);
+    EXPECT_EQ(o->count, 5u);
+}
+
+TEST(HalsamplerOptions, RefusesBadValues)
+{
+    Args bad_chan{"halsampler", "-c", "8"};
+    auto o = hal::parse_sampler_options(bad_chan.span());
+    ASSERT_FALSE(o);
+    EXPECT_EQ(o.error().message, "-c 8: CHAN must be a FIFO number 0..7");
+    Args bad_count{"halsampler", "-n", "-1"};
+    EXPECT_FALSE(hal::parse_sampler_options(bad_count.span()));
+    Args junk{"halsampler", "-n", "5x"};
+    EXPECT_FALSE(hal::parse_sampler_options(junk.span()));
+    Args missing{"halsampler", "-c"};
+    o = hal::parse_sampler_options(missing.span());
+    ASSERT_FALSE(o);
+    EXPECT_EQ(o.error().message, "option -c needs a value");
+    Args unknown{"halsampler", "-x"};
+    o = hal::parse_sampler_options(unknown.span());
+    ASSERT_FALSE(o);
+    EXPECT_EQ(o.error().message, "unknown option -x");
+    Args two{"halsampler", "a", "b"};
+    EXPECT_FALSE(hal::parse_sampler_options(two.span()));
+}
+
+TEST(HalsamplerOptions, DoubleDashEndsOptions)
+{
+    Args a{"halsampler", "--", "-file"};
+    auto o = hal::parse_sampler_options(a.span());
+    ASSERT_TRUE(o);
+    EXPECT_EQ(o->filename, "-file");
+}
+
+TEST(HalsamplerFormat, EachValueIsFollowedByOneSpace)
+{
+    hal_fifo_value rec[6];
+    rec[HAL_FIFO_REC_SAMPLE].s = 42;
+    rec[HAL_FIFO_REC_FLAGS].u = 0;
+    rec[2].f = 0.25;
+    rec[3].u = 1;
+    rec[4].s = -12;
+    rec[5].u = 4000000000u;
+    EXPECT_EQ(hal::format_sample("fbsu", rec, false), "0.250000 1 -12 4000000000 \n");
+    EXPECT_EQ(hal::format_sample("fbsu", rec, true), "42 0.250000 1 -12 4000000000 \n");
+}
+
+TEST(HalsamplerFormat, NegativeSampleNumbersPrintSigned)
+{
+    hal_fifo_value rec[3];
+    rec[HAL_FIFO_REC_SAMPLE].s = -3;
+    rec[HAL_FIFO_REC_FLAGS].u = 0;
+    rec[2].u = 0;
+    EXPECT_EQ(hal::format_sample("b", rec, true), "-3 0 \n");
+}
+
+TEST(HalstreamerOptions, ChannelAndFile)
+{
+    Args a{"halstreamer", "-c1", "data.txt"};
+    auto o = hal::parse_streamer_options(a.span());
+    ASSERT_TRUE(o);
+    EXPECT_EQ(o->channel, 1);
+    EXPECT_EQ(o->filename, "data.txt");
+    Args bad{"halstreamer", "-c", "x"};
+    EXPECT_FALSE(hal::parse_streamer_options(bad.span()));
+    Args unknown{"halstreamer", "-t"};
+    EXPECT_FALSE(hal::parse_streamer_options(unknown.span()));
+}
+
+TEST(HalstreamerLine, ParsesEveryType)
+{
+    auto v = hal::parse_stream_line("ffbsu", " 1.5\t-2e3 1 -12 4294967295\r\n");
+    ASSERT_TRUE(v);
+    ASSERT_EQ(v->size(), 5u);
+    EXPECT_DOUBLE_EQ((*v)[0].f, 1.5);
+    EXPECT_DOUBLE_EQ((*v)[1].f, -2000.0);
+    EXPECT_EQ((*v)[2].u, 1u);
+    EXPECT_EQ((*v)[3].s, -12);
+    EXPECT_EQ((*v)[4].u, 4294967295u);
+}
+
+TEST(HalstreamerLine, ReadsWhatHalsamplerWrites)
+{
+    hal_fifo_value rec[5];
+    rec[0].s = 0;
+    rec[1].u = 0;
+    rec[2].f = -0.125;
+    rec[3].u = 0;
+    rec[4].s = 7;
+    auto v = hal::parse_stream_line("fbs", hal::format_sample("fbs", rec, false));
+    ASSERT_TRUE(v);
+    EXPECT_DOUBLE_EQ((*v)[0].f, -0.125);
+    EXPECT_EQ((*v)[2].s, 7);
+}
+
+TEST(HalstreamerLine, WrongNumberOfValuesIsNamed)
+{
+    auto v = hal::parse_stream_line("ffbs", "1 2 0\n");
+    ASSERT_FALSE(v);
+    EXPECT_EQ(v.error().message, "expected 4 values (cfg 'ffbs'), found 3");
+}
+
+TEST(HalstreamerLine, BadValuesAreNamed)
+{
+    auto v = hal::parse_stream_line("fb", "1.0 2\n");
+    ASSERT_FALSE(v);
+    EXPECT_EQ(v.error().message, "value 2 '2' is not a valid bit (0 or 1)");
+    v = hal::parse_stream_line("f", "abc");
+    ASSERT_FALSE(v);
+    EXPECT_EQ(v.error().message, "value 1 'abc' is not a valid float");
+    EXPECT_FALSE(hal::parse_stream_line("s", "2147483648"));
+    EXPECT_TRUE(hal::parse_stream_line("s", "-2147483648"));
+    EXPECT_FALSE(hal::parse_stream_line("u", "-1"));
+    EXPECT_FALSE(hal::parse_stream_line("u", "4294967296"));
+    EXPECT_FALSE(hal::parse_stream_line("s", "12abc"));
+    EXPECT_FALSE(hal::parse_stream_line("f", "1e999"));
+}
+
+TEST(HalstreamerLine, BlankLinesAreRecognised)
+{
+    EXPECT_TRUE(hal::is_blank_line(" \t\r\n"));
+    EXPECT_TRUE(hal::is_blank_line(""));
+    EXPECT_FALSE(hal::is_blank_line(" 0\n"));
+}
+
+}  // namespace

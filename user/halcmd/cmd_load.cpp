@@ -1,0 +1,284 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// cmd_load.cpp - loadrt, unloadrt, loadusr, unloadusr, waitusr, unload (halcmd(1)).
+// Realtime modules go through rtapi_app (rtapi_client.hpp); userspace components are
+// programs we fork/exec and later SIGTERM by the pid their component records.
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+#include <thread>
+
+#include "commands.hpp"
+#include "hal_query.h"
+#include "rtapi_client.hpp"
+#include "session.hpp"
+#include "snapshot.hpp"
+
+namespace hal::halcmd {
+
+namespace {
+
+using namespace std::chrono_literals;
+constexpr auto poll_interval = 20ms;
+constexpr auto ready_timeout = 20s;      // loadusr -W: generous for slow (sanitizer) builds
+constexpr auto exit_timeout = 10s;       // unloadusr: SIGTERM to gone
+
+bool process_alive(int pid)
+{
+    return pid > 0 && (kill(pid, 0) == 0 || errno == EPERM);
+}
+
+// Userspace components matching name ("all": every one).
+std::vector<hal_comp_info> user_comps(const std::string& name)
+{
+    std::vector<hal_comp_info> out;
+    for (const hal_comp_info& c : take_snapshot().comps)
+        if (!c.is_realtime && (name == "all" || name == c.name))
+            out.push_back(c);
+    return out;
+}
+
+std::string basename_of(const std::string& path)
+{
+    size_t slash = path.rfind('/');
+    return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+struct LoadusrFlags {
+    bool wait_ready = false;
+    std::string wait_name;
+    bool wait_exit = false;
+    bool ignore_status = false;
+    size_t program = 0;                  // index of the program in args
+};
+
+Result<LoadusrFlags> parse_loadusr_flags(Args args)
+{
+    LoadusrFlags f;
+    size_t i = 0;
+    for (; i < args.size() && args[i].size() > 1 && args[i][0] == '-'; i++) {
+        const std::string& a = args[i];
+        if (a == "-W") {
+            f.wait_ready = true;
+        } else if (a == "-Wn") {
+            if (i + 1 >= args.size())
+                return Error{-22, "loadusr: -Wn needs a component name"};
+            f.wait_ready = true;
+            f.wait_name = args[++i];
+        } else if (a == "-w") {
+            f.wait_exit = true;
+        } else if (a == "-i") {
+            f.ignore_status = true;
+        } else {
+            return Error{-22, "loadusr: unknown flag '" + a + "' (use -W, -Wn NAME, -w or -i)"};
+        }
+    }
+    if (i >= args.size())
+        return Error{-22, "loadusr: no program given"};
+    f.program = i;
+    if (f.wait_ready && f.wait_name.empty())
+        f.wait_name = basename_of(args[i]);
+    return f;
+}
+
+// fork/exec through PATH. A close-on-exec pipe tells the parent whether exec worked,
+// so "no such program" is our one error line, not a message from the child.
+Result<int> spawn(const std::vector<std::string>& argv)
+{
+    int fds[2];
+    if (pipe2(fds, O_CLOEXEC) < 0)
+        return Error{-errno, std::string("loadusr: pipe: ") + std::strerror(errno)};
+    std::fflush(nullptr);
+    pid_t pid = fork();
+    if (pid < 0) {
+        int e = errno;
+        close(fds[0]);
+        close(fds[1]);
+        return Error{-e, std::string("loadusr: fork: ") + std::strerror(e)};
+    }
+    if (pid == 0) {
+        std::vector<char*> cargv;
+        for (const std::string& a : argv)
+            cargv.push_back(const_cast<char*>(a.c_str()));
+        cargv.push_back(nullptr);
+        close(fds[0]);
+        execvp(cargv[0], cargv.data());
+        int e = errno;
+        (void)!write(fds[1], &e, sizeof(e));
+        _exit(127);
+    }
+    close(fds[1]);
+    int child_errno = 0;
+    ssize_t n;
+    do {
+        n = read(fds[0], &child_errno, sizeof(child_errno));
+    } while (n < 0 && errno == EINTR);
+    close(fds[0]);
+    if (n == sizeof(child_errno)) {
+        waitpid(pid, nullptr, 0);
+        return Error{-child_errno, "loadusr: cannot run '" + argv[0] + "': " + std::strerror(child_errno)};
+    }
+    return static_cast<int>(pid);
+}
+
+std::string describe_status(int status)
+{
+    if (WIFEXITED(status))
+        return "exited with status " + std::to_string(WEXITSTATUS(status));
+    if (WIFSIGNALED(status))
+        return std::string("was killed by signal ") + strsignal(WTERMSIG(status));
+    return "stopped";
+}
+
+Result<void> wait_until_ready(int pid, const std::string& program, const std::string& name)
+{
+    auto deadline = std::chrono::steady_clock::now() + ready_timeout;
+    for (;;) {
+        hal_comp_info c;
+        if (hal_find_comp(name.c_str(), &c) == 0 && c.is_ready)
+            return ok();
+        int status;
+        if (waitpid(pid, &status, WNOHANG) == pid)
+            return Error{-ECHILD, "loadusr: '" + program + "' " + describe_status(status) +
+                                      " before component '" + name + "' became ready"};
+        if (std::chrono::steady_clock::now() > deadline)
+            return Error{-ETIMEDOUT, "loadusr: waited " + std::to_string(ready_timeout.count()) +
+                                         " s for component '" + name + "' to become ready; giving up"};
+        std::this_thread::sleep_for(poll_interval);
+    }
+}
+
+}  // namespace
+
+Result<void> cmd_loadrt(Session& s, Args args)
+{
+    if (auto r = require_unlocked(HAL_LOCK_LOAD, "loadrt"); !r)
+        return r;
+    std::vector<std::string> margs(args.begin() + 1, args.end());
+    Result<void> r = hal::rtapi_load(args[0], margs);
+    if (!r)
+        return Error{r.error().code, r.error().message};
+    s.info("Realtime module '" + args[0] + "' loaded");
+    return ok();
+}
+
+Result<void> cmd_unloadrt(Session& s, Args args)
+{
+    if (auto r = require_unlocked(HAL_LOCK_LOAD, "unloadrt"); !r)
+        return r;
+    Result<void> r = hal::rtapi_unload(args[0]);
+    if (!r)
+        return Error{r.error().code, r.error().message};
+    s.info(args[0] == "all" ? "All realtime modules unloaded" : "Realtime module '" + args[0] + "' unloaded");
+    return ok();
+}
+
+Result<void> cmd_loadusr(Session& s, Args args)
+{
+    if (auto r = require_unlocked(HAL_LOCK_LOAD, "loadusr"); !r)
+        return r;
+    auto flags = parse_loadusr_flags(args);
+    if (!flags)
+        return flags.error();
+    std::vector<std::string> argv(args.begin() + static_cast<long>(flags->program), args.end());
+    auto pid = spawn(argv);
+    if (!pid)
+        return pid.error();
+    if (flags->wait_ready) {
+        if (auto r = wait_until_ready(*pid, argv[0], flags->wait_name); !r)
+            return r;
+    }
+    if (flags->wait_exit) {
+        int status = 0;
+        while (waitpid(*pid, &status, 0) < 0 && errno == EINTR) {
+        }
+        bool success = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+        if (!success && !flags->ignore_status)
+            return Error{-ECHILD, "loadusr: '" + argv[0] + "' " + describe_status(status)};
+    }
+    s.info("Program '" + argv[0] + "' started (pid " + std::to_string(*pid) + ")");
+    return ok();
+}
+
+Result<void> unload_user_components(Session* s, const std::string& name)
+{
+    std::vector<hal_comp_info> comps = user_comps(name);
+    if (comps.empty() && name != "all")
+        return Error{-ENOENT, "unloadusr: no userspace component named '" + name + "'"};
+    int self = static_cast<int>(getpid());
+    for (const hal_comp_info& c : comps)
+        if (c.pid != self && process_alive(c.pid))
+            kill(c.pid, SIGTERM);
+    auto deadline = std::chrono::steady_clock::now() + exit_timeout;
+    for (const hal_comp_info& c : comps) {
+        if (c.pid == self)
+            continue;
+        hal_comp_info now;
+        while (hal_find_comp(c.name, &now) == 0 && now.id == c.id && process_alive(c.pid)) {
+            waitpid(c.pid, nullptr, WNOHANG);        // reap our own children (loadusr)
+            if (std::chrono::steady_clock::now() > deadline)
+                return Error{-ETIMEDOUT, "unloadusr: component '" + std::string(c.name) + "' (pid " +
+                                             std::to_string(c.pid) + ") did not exit after SIGTERM"};
+            std::this_thread::sleep_for(poll_interval);
+        }
+        // The process died without hal_exit(): remove what it left behind.
+        if (hal_find_comp(c.name, &now) == 0 && now.id == c.id)
+            hal_exit(c.id);
+        if (s)
+            s->info("Userspace component '" + std::string(c.name) + "' unloaded");
+    }
+    return ok();
+}
+
+Result<void> cmd_unloadusr(Session& s, Args args)
+{
+    if (auto r = require_unlocked(HAL_LOCK_LOAD, "unloadusr"); !r)
+        return r;
+    return unload_user_components(&s, args[0]);
+}
+
+Result<void> cmd_waitusr(Session& s, Args args)
+{
+    hal_comp_info c;
+    if (hal_find_comp(args[0].c_str(), &c) != 0)
+        return Error{-ENOENT, "waitusr: no component named '" + args[0] + "'"};
+    if (c.is_realtime)
+        return Error{-EINVAL, "waitusr: '" + args[0] + "' is a realtime component, not a userspace one"};
+    hal_comp_info now;
+    while (hal_find_comp(c.name, &now) == 0 && now.id == c.id && process_alive(c.pid)) {
+        waitpid(c.pid, nullptr, WNOHANG);
+        std::this_thread::sleep_for(poll_interval);
+    }
+    s.info("Userspace component '" + args[0] + "' is gone");
+    return ok();
+}
+
+Result<void> cmd_unload(Session& s, Args args)
+{
+    if (auto r = require_unlocked(HAL_LOCK_LOAD, "unload"); !r)
+        return r;
+    const std::string& name = args[0];
+    if (name == "all") {
+        if (auto r = unload_user_components(&s, "all"); !r)
+            return r;
+        Result<void> r = hal::rtapi_unload("all");
+        if (!r)
+            return Error{r.error().code, r.error().message};
+        return ok();
+    }
+    hal_comp_info c;
+    if (hal_find_comp(name.c_str(), &c) != 0)
+        return Error{-ENOENT, "unload: no component named '" + name + "'"};
+    if (!c.is_realtime)
+        return unload_user_components(&s, name);
+    Result<void> r = hal::rtapi_unload(c.module[0] ? std::string(c.module) : name);
+    if (!r)
+        return Error{r.error().code, r.error().message};
+    return ok();
+}
+
+}  // namespace hal::halcmd

@@ -1,0 +1,143 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// halrun.cpp - halrun (halcmd(1)): refuse a second realtime session, run halcmd with
+// the given arguments (a .hal file means -f file), optionally an interactive
+// "halcmd -kf" (-I), then tear everything down. "halrun -U" tears down whatever is left.
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+#include "hal_query.h"
+#include "options.hpp"
+#include "rtapi_client.hpp"
+#include "session.hpp"
+#include "snapshot.hpp"
+
+#if __has_include("rtapi_shmem_uspace.h")
+#include "rtapi_shmem_uspace.h"
+#else
+extern "C" int rtapi_shmem_force_unlink_all(void);
+#endif
+
+namespace {
+
+using namespace hal::halcmd;
+
+void complain(const std::string& msg)
+{
+    std::fflush(stdout);
+    std::fprintf(stderr, "halrun: %s\n", msg.c_str());
+}
+
+std::string instance()
+{
+    const char* v = std::getenv("RTAPI_INSTANCE");
+    return v ? v : "0";
+}
+
+void refuse_second_session()
+{
+    complain("a realtime session is already running (RTAPI_INSTANCE=" + instance() +
+             "); end it with 'halrun -U'");
+}
+
+// Stop threads, unload userspace components and realtime modules, stop rtapi_app.
+// Returns false if something could not be undone (each problem printed once).
+bool teardown_attached()
+{
+    bool ok = true;
+    hal_set_lock(HAL_LOCK_NONE);                 // a locked HAL must not block its own teardown
+    if (hal_threads_running())
+        hal_stop_threads();
+    if (auto r = unload_user_components(nullptr, "all"); !r) {
+        complain(r.error().message);
+        ok = false;
+    }
+    if (hal::rtapi_running()) {
+        if (auto r = hal::rtapi_unload("all"); !r) {
+            complain(r.error().message);
+            ok = false;
+        }
+    }
+    return ok;
+}
+
+// After the last user detached: stop rtapi_app and drop the segments, so signals
+// made by halcmd itself do not leak into the next session.
+bool shutdown_realtime()
+{
+    bool ok = true;
+    if (hal::rtapi_running()) {
+        if (auto r = hal::rtapi_shutdown(); !r) {
+            complain(r.error().message);
+            ok = false;
+        }
+    }
+    rtapi_shmem_force_unlink_all();
+    return ok;
+}
+
+int force_exit()
+{
+    if (hal_attach() == 0) {
+        hal_release_mutex();
+        teardown_attached();
+        hal_detach();
+    }
+    shutdown_realtime();
+    return 0;
+}
+
+int run_session(const HalrunOptions& opts)
+{
+    if (hal::rtapi_running()) {
+        refuse_second_session();
+        return 1;
+    }
+    int status;
+    {
+        Session session(opts.halcmd);
+        if (!session.start())
+            return 1;
+        if (!take_snapshot().comps.empty()) {
+            refuse_second_session();
+            return 1;                             // not ours: leave it running
+        }
+        // "halrun -I" alone: the interactive halcmd is the whole run, not a second one.
+        bool has_input = opts.halcmd.from_file || !opts.halcmd.command.empty();
+        status = opts.interactive && !has_input ? 0 : session.run_input();
+        if (opts.interactive && session.run_keep_going_stdin() != 0)
+            status = 1;
+        if (!teardown_attached())
+            status = 1;
+    }                                             // the session detaches here
+    if (!shutdown_realtime())
+        status = 1;
+    return status;
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    std::vector<std::string> args(argv + 1, argv + argc);
+    auto opts = parse_halrun_options(args);
+    if (!opts) {
+        complain(opts.error().message);
+        return 1;
+    }
+    try {
+        if (opts->force_exit)
+            return force_exit();
+        if (opts->halcmd.help) {
+            hal::halcmd::Session s(opts->halcmd);
+            return s.run();
+        }
+        return run_session(*opts);
+    } catch (const std::exception& e) {
+        complain(std::string("internal error: ") + e.what());
+        return 1;
+    }
+}

@@ -1,0 +1,27 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// main.cpp - halcmd: parse options, run the session, map failure to exit status 1.
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "options.hpp"
+#include "session.hpp"
+
+int main(int argc, char** argv)
+{
+    std::vector<std::string> args(argv + 1, argv + argc);
+    auto opts = hal::halcmd::parse_halcmd_options(args);
+    if (!opts) {
+        std::fprintf(stderr, "halcmd: %s\n", opts.error().message.c_str());
+        return 1;
+    }
+    try {
+        hal::halcmd::Session session(std::move(*opts));
+        return session.run();
+    } catch (const std::exception& e) {
+        std::fflush(stdout);
+        std::fprintf(stderr, "halcmd: internal error: %s\n", e.what());
+        return 1;
+    }
+}

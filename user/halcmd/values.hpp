@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// values.hpp - HAL values as halcmd reads and prints them (RULINGS.md "halcmd output
+// formats"): type names, strict parsing of setp/sets values, display formatting,
+// and the name patterns of show/list. Pure: no HAL calls.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "hal/result.hpp"
+#include "hal_query.h"
+
+namespace hal::halcmd {
+
+const char* type_name(hal_type_t type);                       // "bit", "s32", "u32", "float"
+std::optional<hal_type_t> parse_type_name(std::string_view name);
+const char* pin_dir_name(hal_pin_dir_t dir);                  // "IN", "OUT", "I/O"
+const char* param_dir_name(hal_param_dir_t dir);              // "RO", "RW"
+
+// bit: 0 1 TRUE FALSE true false; s32/u32: decimal or 0x hex, range-checked;
+// float: a full strtod() match. The error says the value and what is accepted.
+Result<hal_value> parse_value(hal_type_t type, std::string_view text);
+
+// TRUE/FALSE, decimal integers, floats via format_float().
+std::string format_value(hal_type_t type, const hal_value& v);
+// The shortest of %.6g .. %.17g that reads back as the same double.
+std::string format_float(double v);
+
+// show/list patterns: a name matches if it starts with a pattern or matches it as
+// a shell glob (fnmatch); no patterns match everything.
+bool name_matches(const std::vector<std::string>& patterns, std::string_view name);
+
+}  // namespace hal::halcmd
