@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-2.0-or-later */
 /* rtapi_math.h - floating-point functions for realtime code (intro(3rtapi), "rtapi_math.h").
- * The kernel has no libm, so rtapi_math.c implements everything itself, in plain C,
+ * The kernel has no libm, so rtapi_math*.c implement everything themselves, in plain C,
  * for both flavors. Use it instead of <math.h> in realtime components, and call FP
  * code only from functions exported with uses_fp = 1.
  *
@@ -10,12 +10,16 @@
  * RTAPI_MATH_NO_MACROS before including it to get only the rtapi_ names. Do not include
  * <math.h> after this header in the same file (its declarations would be renamed).
  *
- * Accuracy, as the largest difference from glibc (itself < 1 ULP) in units in the last
- * place, measured by tests/unit/rtapi/rtapi_math_test.cpp over random and edge-case
- * arguments (results in the subnormal range may be off by one more subnormal ULP):
+ * Accuracy, in units in the last place (ULP) from the correctly rounded result, as
+ * tests/unit/rtapi/rtapi_math_test.cpp checks it over random and edge-case arguments
+ * against glibc's long double functions rounded to double (results in the subnormal
+ * range may be off by one more subnormal ULP):
  *   exact (0 ULP): fabs floor ceil trunc round rint copysign fmin fmax fmod sqrt
  *   <= 1 ULP: sin cos tan (every finite argument: full Payne-Hanek reduction), asin acos
  *             atan atan2 exp log log10 pow sinh cosh tanh hypot
+ * Internally they work in double-double and round once, so most results are the
+ * correctly rounded ones. fmod is exact by long division (up to ~2000 steps when the
+ * exponents of x and y are far apart).
  * Special values (NaN, infinities, signed zeros) follow C99 Annex F. */
 #ifndef RTAPI_MATH_H
 #define RTAPI_MATH_H

@@ -17,7 +17,6 @@ static inline void cpu_relax(void)
 	__builtin_ia32_pause();
 #endif
 }
-	/* 0 until the first successful rtapi_clock_set_period */
 
 long int rtapi_clock_set_period(long int nsec)
 {

@@ -158,7 +158,7 @@ Result<void> ModuleHost::load(const std::string& name, const std::vector<ModuleA
     std::filesystem::path so = dir_ / (name + ".so");
     std::error_code ec;
     if (!std::filesystem::exists(so, ec))
-        return module_error(-ENOENT, name, "no module " + so.string());
+        return module_error(-ENOENT, name, "no such realtime module (" + so.filename().string() + " is not in the module directory)");
     // A previous instance still mapped (another module bound to its symbols) would
     // not run its constructors again, so its parameters could not be set.
     if (DlHandle old{dlopen(so.c_str(), RTLD_NOW | RTLD_NOLOAD)}; old)
