@@ -1,11 +1,12 @@
 #!/bin/sh
-# kmod-manifest.sh SRCROOT BUILDDIR - prints the components' kbuild lines from
-# modules.manifest and links their sources into BUILDDIR (kernel/Makefile.kmod).
+# kmod-manifest.sh SRCROOT BUILDDIR [MANIFEST] - prints the components' kbuild lines
+# from MANIFEST (default SRCROOT/modules.manifest) and links their sources into
+# BUILDDIR (kernel/Makefile.kmod).
 # A module whose only source is NAME.c is built from it directly; otherwise its
 # objects are listed as NAME-y (a source may then not be called NAME.c).
 set -eu
-src=$1 build=$2
-awk '!/^[ \t]*(#|$)/ { print }' "$src/modules.manifest" | while read -r name fp sources; do
+src=$1 build=$2 manifest=${3:-$1/modules.manifest}
+awk '!/^[ \t]*(#|$)/ { print }' "$manifest" | while read -r name fp sources; do
 	case $name in *[!a-z0-9_]*|'') echo "modules.manifest: bad module name '$name'" >&2; exit 1;; esac
 	case $fp in fp|nofp) ;; *) echo "modules.manifest: $name: '$fp' is not fp or nofp" >&2; exit 1;; esac
 	objs=

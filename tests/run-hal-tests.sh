@@ -51,6 +51,12 @@ if [ ! -x "$build/bin/halrun" ]; then
 fi
 export PATH="$build/bin:$PATH"
 export HAL_TEST_FLAVOR=$flavor
+# halcmd, halrun and the ULAPI library follow HAL_FLAVOR (kernel|sim). The kernel
+# flavor has one HAL per machine (rtapi.ko, hal_lib.ko; RTAPI_INSTANCE means
+# nothing there), so its tests take turns. Inside the test VM, where there is no
+# bash, tests/kernel/run-hal-tests-vm.sh applies the same rules.
+export HAL_FLAVOR=$flavor
+[ "$flavor" = kernel ] && jobs=1
 timeout_s=${HAL_TEST_TIMEOUT:-120}
 
 mapfile -t all_dirs < <(find "$tests_dir" -path "$tests_dir/unit" -prune -o \

@@ -97,6 +97,9 @@ static int comp_new_locked(const char *name)
 	comp->pid = (rtapi_s32)rtapi_getpid();
 #endif
 	comp->mem_base = (rtapi_u64)(unsigned long)hal_shmem_base;
+#ifdef RTAPI
+	hal_seg->rt_mem_base = comp->mem_base;
+#endif
 	record_load_context(comp);
 	hal_current_comp_off = hal_off(comp);
 	return comp->comp_id;
@@ -131,11 +134,6 @@ static void comp_delete_locked(struct hal_comp_rec *comp)
 	struct hal_obj_hdr *o, *next;
 	struct hal_block_hdr *blk;
 
-	for (o = hal_first(HAL_KIND_THREAD); o; o = next) {
-		next = hal_next(o);
-		if (o->owner_off == comp_off)
-			hal_thread_delete_locked((struct hal_thread_rec *)o);
-	}
 	for (o = hal_first(HAL_KIND_FUNCT); o; o = hal_next(o))
 		if (o->owner_off == comp_off)
 			hal_funct_remove_from_threads((struct hal_funct_rec *)o);
@@ -174,7 +172,7 @@ static bool comp_is_local(const struct hal_comp_rec *comp)
 #endif
 }
 
-static void local_user_gone(void)
+void hal_local_user_gone(void)
 {
 	if (--hal_local_users <= 0) {
 		hal_local_users = 0;
@@ -210,7 +208,7 @@ int hal_exit(int comp_id)
 	comp_delete_locked(comp);
 	hal_unlock();
 	if (local)
-		local_user_gone();
+		hal_local_user_gone();
 	return 0;
 }
 
@@ -233,7 +231,7 @@ int hal_exit_module_comps(const char *module)
 	}
 	hal_unlock();
 	for (n = 0; n < removed; n++)
-		local_user_gone();
+		hal_local_user_gone();
 	return removed;
 }
 

@@ -20,6 +20,12 @@ void hal_set_load_context(const char *module, const char *args);
  * rtapi_app_main() failed and left some behind). Returns how many were removed. */
 int hal_exit_module_comps(const char *module);
 
+/* Delete every thread (their tasks stop first): when the realtime host shuts
+ * down, since threads outlive the modules that created them. Returns how many. */
+int hal_exit_threads(void);
+/* Threads that exist now (the host keeps running while any do). */
+int hal_thread_count(void);
+
 #ifdef __cplusplus
 }
 #endif

@@ -31,7 +31,8 @@ static inline bool hal_in_segment(const volatile void *p, unsigned long len)
 int hal_segment_map(void);		/* map (and first time initialise) the segment */
 void hal_segment_unmap(void);		/* when the last local user is gone */
 void hal_segment_init(struct hal_seg_hdr *seg, rtapi_u32 size);	/* lays out an empty segment */
-extern int hal_local_users;		/* components of this address space + explicit attach */
+extern int hal_local_users;		/* components + threads of this address space + attach */
+void hal_local_user_gone(void);		/* unmaps the segment after the last one */
 
 /* --- locking (hal_lock.c) --- */
 void hal_lock(void);
@@ -81,6 +82,7 @@ const char *hal_type_name(int type);
 const char *hal_dir_name(int dir);
 
 /* --- pins, signals (hal_pin.c, hal_signal.c) --- */
+/* comp NULL: owned by the realtime host itself (a thread's timing pin). */
 int hal_pin_new_locked(const char *name, hal_type_t type, hal_pin_dir_t dir, void **data_ptr_addr,
 		       struct hal_comp_rec *comp);
 void hal_pin_aim(struct hal_pin_rec *pin, volatile void *target);	/* set the owner's pointer */

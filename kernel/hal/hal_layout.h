@@ -12,7 +12,7 @@
 
 #define HAL_KEY 0x48414c32		/* "HAL2": RTAPI shmem key of the segment */
 #define HAL_SEGMENT_SIZE (64u << 20)	/* sparse in userspace; holds ~100k pins */
-#define HAL_LAYOUT_VERSION 1
+#define HAL_LAYOUT_VERSION 2
 #define HAL_SEG_MAGIC 0x48414c21
 #define HAL_HASH_BUCKETS 65536u		/* power of two */
 #define HAL_ALIGN 8u
@@ -47,13 +47,13 @@ struct hal_obj_hdr {
 	rtapi_u32 next_off;	/* kind list, in creation order */
 	rtapi_u32 prev_off;
 	rtapi_u32 hash_next_off;/* name index bucket chain */
-	rtapi_u32 owner_off;	/* owning component record (0 for signals) */
+	rtapi_u32 owner_off;	/* owning component record (0: signals, threads: the RT host) */
 	rtapi_u32 hash;
 	rtapi_u8 kind;		/* enum hal_kind */
 	rtapi_u8 pad[3];
 	char name[HAL_NAME_LEN + 1];
 };
-_Static_assert(sizeof(struct hal_obj_hdr) == 72, "segment layout changed: bump HAL_LAYOUT_VERSION");
+_Static_assert(sizeof(struct hal_obj_hdr) == 88, "segment layout changed: bump HAL_LAYOUT_VERSION");
 
 /* Storage of one value; a signal's value and a pin's dummy are this. */
 union hal_data {
@@ -76,7 +76,7 @@ struct hal_comp_rec {
 	rtapi_u64 constructor;	/* hal_constructor_t in the owner's address space */
 	char module[HAL_NAME_LEN + 1];
 };
-_Static_assert(sizeof(struct hal_comp_rec) == 152, "segment layout changed: bump HAL_LAYOUT_VERSION");
+_Static_assert(sizeof(struct hal_comp_rec) == 184, "segment layout changed: bump HAL_LAYOUT_VERSION");
 
 struct hal_pin_rec {
 	struct hal_obj_hdr hdr;
@@ -87,7 +87,7 @@ struct hal_pin_rec {
 	rtapi_u8 pad[6];
 	union hal_data dummy;	/* the value while unlinked */
 };
-_Static_assert(sizeof(struct hal_pin_rec) == 96, "segment layout changed: bump HAL_LAYOUT_VERSION");
+_Static_assert(sizeof(struct hal_pin_rec) == 112, "segment layout changed: bump HAL_LAYOUT_VERSION");
 
 struct hal_param_rec {
 	struct hal_obj_hdr hdr;
@@ -96,7 +96,7 @@ struct hal_param_rec {
 	rtapi_u8 dir;		/* hal_param_dir_t */
 	rtapi_u8 pad[2];
 };
-_Static_assert(sizeof(struct hal_param_rec) == 80, "segment layout changed: bump HAL_LAYOUT_VERSION");
+_Static_assert(sizeof(struct hal_param_rec) == 96, "segment layout changed: bump HAL_LAYOUT_VERSION");
 
 struct hal_sig_rec {
 	struct hal_obj_hdr hdr;
@@ -107,7 +107,7 @@ struct hal_sig_rec {
 	rtapi_u8 pad;
 	union hal_data value;	/* linked pins point here */
 };
-_Static_assert(sizeof(struct hal_sig_rec) == 88, "segment layout changed: bump HAL_LAYOUT_VERSION");
+_Static_assert(sizeof(struct hal_sig_rec) == 104, "segment layout changed: bump HAL_LAYOUT_VERSION");
 
 struct hal_funct_rec {
 	struct hal_obj_hdr hdr;
@@ -120,7 +120,7 @@ struct hal_funct_rec {
 	rtapi_u8 reentrant;
 	rtapi_u8 pad[6];
 };
-_Static_assert(sizeof(struct hal_funct_rec) == 112, "segment layout changed: bump HAL_LAYOUT_VERSION");
+_Static_assert(sizeof(struct hal_funct_rec) == 128, "segment layout changed: bump HAL_LAYOUT_VERSION");
 
 /* A function's place in a thread's list (HAL_KIND_ENTRY block, no name). */
 struct hal_entry_rec {
@@ -142,7 +142,7 @@ struct hal_thread_rec {
 	rtapi_u64 cycles;	/* completed cycles: written by the thread only */
 	rtapi_u64 run_ns;	/* time spent in functions: written by the thread only */
 };
-_Static_assert(sizeof(struct hal_thread_rec) == 128, "segment layout changed: bump HAL_LAYOUT_VERSION");
+_Static_assert(sizeof(struct hal_thread_rec) == 144, "segment layout changed: bump HAL_LAYOUT_VERSION");
 
 /* The segment starts with this header. */
 struct hal_seg_hdr {
@@ -164,6 +164,7 @@ struct hal_seg_hdr {
 	rtapi_u32 list_tail[HAL_KIND_COUNT];
 	rtapi_u32 count[HAL_KIND_COUNT];
 	rtapi_u32 pad;
+	rtapi_u64 rt_mem_base;	/* the realtime host's mapping: owner of threads and their pins */
 };
 
 #endif /* HAL_LAYOUT_H */

@@ -18,7 +18,7 @@ int hal_param_new_locked(const char *name, hal_type_t type, hal_param_dir_t dir,
 				name, (int)dir);
 		return -EINVAL;
 	}
-	if (!hal_in_segment(data_addr, type == HAL_FLOAT ? 8 : 1)) {
+	if (!hal_in_segment(data_addr, type == HAL_FLOAT ? 8 : type == HAL_BIT ? 1 : 4)) {
 		rtapi_print_msg(RTAPI_MSG_ERR,
 				"parameter '%s': its data is not in HAL shared memory (use hal_malloc)\n",
 				name);
@@ -27,7 +27,7 @@ int hal_param_new_locked(const char *name, hal_type_t type, hal_param_dir_t dir,
 	err = hal_check_lock(HAL_LOCK_LOAD, "create parameters");
 	if (err)
 		return err;
-	param = hal_object_new(HAL_KIND_PARAM, sizeof(*param), name, hal_off(comp), &err);
+	param = hal_object_new(HAL_KIND_PARAM, sizeof(*param), name, comp ? hal_off(comp) : 0, &err);
 	if (!param)
 		return err;
 	param->type = type;

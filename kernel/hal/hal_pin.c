@@ -12,9 +12,10 @@ void hal_pin_aim(struct hal_pin_rec *pin, volatile void *target)
 {
 	struct hal_comp_rec *owner = hal_ptr(pin->hdr.owner_off);
 	rtapi_u64 *ptr = hal_ptr(pin->data_ptr_off);
+	rtapi_u64 base = owner ? owner->mem_base : hal_seg->rt_mem_base;	/* thread pins */
 
 	/* The owner dereferences this in its own address space (kernel or rtapi_app). */
-	__atomic_store_n(ptr, owner->mem_base + hal_off(target), __ATOMIC_RELEASE);
+	__atomic_store_n(ptr, base + hal_off(target), __ATOMIC_RELEASE);
 }
 
 union hal_data *hal_pin_value(struct hal_pin_rec *pin)
@@ -47,7 +48,7 @@ int hal_pin_new_locked(const char *name, hal_type_t type, hal_pin_dir_t dir, voi
 	err = hal_check_lock(HAL_LOCK_LOAD, "create pins");
 	if (err)
 		return err;
-	pin = hal_object_new(HAL_KIND_PIN, sizeof(*pin), name, hal_off(comp), &err);
+	pin = hal_object_new(HAL_KIND_PIN, sizeof(*pin), name, comp ? hal_off(comp) : 0, &err);
 	if (!pin)
 		return err;
 	pin->type = type;

@@ -84,7 +84,7 @@ static const char *owner_name(const struct hal_obj_hdr *o, int *id)
 	const struct hal_comp_rec *c = hal_ptr(o->owner_off);
 
 	*id = c ? c->comp_id : 0;
-	return c ? c->hdr.name : "";
+	return c ? c->hdr.name : "hal_lib";	/* threads and their pins: the realtime host */
 }
 
 static void comp_info(const struct hal_comp_rec *c, struct hal_comp_info *out)

@@ -2,7 +2,10 @@
 /* hal_thread.c - HAL threads (hal_create_thread(3hal)): an RTAPI periodic task
  * that calls its functions in order each period while threads are started.
  * Threads are created by realtime code only; halcmd edits their function lists
- * from userspace, which the task walks without taking the HAL mutex. */
+ * from userspace, which the task walks without taking the HAL mutex.
+ * As threads(9) says, a thread stands alone once created: it belongs to the
+ * realtime host (owner 0), survives unloading the module that made it, and goes
+ * with hal_thread_delete() or hal_exit_threads() when the host shuts down. */
 #include "hal_internal.h"
 
 #ifdef RTAPI
@@ -10,9 +13,13 @@ static void run_functions(struct hal_thread_rec *t)
 {
 	long long start = rtapi_get_clocks(), prev = start, now;
 	long long t0 = rtapi_get_time();
-	rtapi_u32 off = __atomic_load_n(&t->first_entry_off, __ATOMIC_ACQUIRE);
+	rtapi_u32 off;
 
-	__atomic_add_fetch(&t->cycle_seq, 1, __ATOMIC_ACQ_REL);	/* odd: running */
+	/* Odd while running. Marked before reading the list (full barrier), so
+	 * hal_threads_quiesce() after unlinking an entry either sees us running or
+	 * we see the list without it. */
+	__atomic_add_fetch(&t->cycle_seq, 1, __ATOMIC_SEQ_CST);
+	off = __atomic_load_n(&t->first_entry_off, __ATOMIC_SEQ_CST);
 	while (off) {
 		struct hal_entry_rec *e = hal_ptr(off);
 		struct hal_funct_rec *f = hal_ptr(e->funct_off);
@@ -83,7 +90,6 @@ static long long thread_period(const char *name, unsigned long period)
 
 static int create_locked(const char *name, unsigned long period, int uses_fp)
 {
-	struct hal_comp_rec *comp = hal_ptr(hal_current_comp_off);
 	struct hal_thread_rec *t;
 	long long actual;
 	int prio, i, err;
@@ -91,10 +97,6 @@ static int create_locked(const char *name, unsigned long period, int uses_fp)
 	err = hal_check_lock(HAL_LOCK_LOAD, "create threads");
 	if (err)
 		return err;
-	if (!comp) {
-		rtapi_print_msg(RTAPI_MSG_ERR, "thread '%s': call hal_init first\n", name);
-		return -EINVAL;
-	}
 	actual = thread_period(name, period);
 	if (actual < 0)
 		return (int)actual;
@@ -102,13 +104,13 @@ static int create_locked(const char *name, unsigned long period, int uses_fp)
 	prio = rtapi_prio_highest();
 	for (i = 0; i < (int)hal_seg->count[HAL_KIND_THREAD]; i++)
 		prio = rtapi_prio_next_lower(prio);
-	t = hal_object_new(HAL_KIND_THREAD, sizeof(*t), name, hal_off(comp), &err);
+	t = hal_object_new(HAL_KIND_THREAD, sizeof(*t), name, 0, &err);
 	if (!t)
 		return err;
 	t->period_ns = actual;
 	t->priority = prio;
 	t->uses_fp = uses_fp != 0;
-	err = hal_timing_objects_new(name, &t->time_ptr, &t->tmax, comp);
+	err = hal_timing_objects_new(name, &t->time_ptr, &t->tmax, 0);
 	if (err)
 		goto undo_record;
 	t->task_id = rtapi_task_new(hal_thread_task, t, prio, 0, uses_fp);
@@ -152,6 +154,8 @@ int hal_create_thread(const char *name, unsigned long period, int uses_fp)
 	if (rc < 0 && hal_seg->count[HAL_KIND_THREAD] == 0)
 		hal_seg->base_period_ns = 0;	/* a refused first thread sets no base period */
 	hal_unlock();
+	if (rc == 0)
+		hal_local_users++;	/* the task needs the mapping until it is deleted */
 	return rc;
 #endif
 }
@@ -173,6 +177,7 @@ void hal_thread_delete_locked(struct hal_thread_rec *t)
 	t->first_entry_off = 0;
 	hal_timing_objects_delete(t->hdr.name);
 	hal_object_delete(&t->hdr);
+	hal_heap_compact(hal_seg);	/* its blocks were freed one by one: merge them */
 	if (hal_seg->count[HAL_KIND_THREAD] == 0)
 		hal_seg->base_period_ns = 0;
 }
@@ -188,8 +193,7 @@ int hal_thread_delete(const char *name)
 	t = hal_find(HAL_KIND_THREAD, name);
 #ifdef ULAPI
 	if (t) {
-		rtapi_print_msg(RTAPI_MSG_ERR, "thread '%s' belongs to realtime code: unload its module\n",
-				name);
+		rtapi_print_msg(RTAPI_MSG_ERR, "thread '%s' belongs to the realtime host\n", name);
 		rc = -EPERM;
 	}
 #else
@@ -201,8 +205,37 @@ int hal_thread_delete(const char *name)
 		rtapi_print_msg(RTAPI_MSG_ERR, "thread '%s' does not exist\n", name);
 		rc = -ENOENT;
 	}
+#ifdef RTAPI
+	if (t)
+		hal_local_user_gone();
+#endif
 	return rc;
 }
+
+int hal_thread_count(void)
+{
+	return hal_seg ? (int)hal_seg->count[HAL_KIND_THREAD] : 0;
+}
+
+#ifdef RTAPI
+int hal_exit_threads(void)
+{
+	struct hal_obj_hdr *o;
+	int n = 0, i;
+
+	if (!hal_seg)
+		return 0;
+	hal_lock();
+	while ((o = hal_first(HAL_KIND_THREAD)) != 0) {
+		hal_thread_delete_locked((struct hal_thread_rec *)o);
+		n++;
+	}
+	hal_unlock();
+	for (i = 0; i < n; i++)
+		hal_local_user_gone();
+	return n;
+}
+#endif
 
 static int set_running(int running)
 {
@@ -235,6 +268,7 @@ void hal_threads_quiesce(void)
 {
 	struct hal_obj_hdr *o;
 
+	__atomic_thread_fence(__ATOMIC_SEQ_CST);	/* pairs with run_functions() */
 	for (o = hal_first(HAL_KIND_THREAD); o; o = hal_next(o)) {
 		struct hal_thread_rec *t = (struct hal_thread_rec *)o;
 		rtapi_u32 seq = __atomic_load_n(&t->cycle_seq, __ATOMIC_ACQUIRE);

@@ -22,6 +22,7 @@ static int __init hal_lib_kmod_init(void)
 
 static void __exit hal_lib_kmod_exit(void)
 {
+	hal_exit_threads();	/* threads outlive their modules, not hal_lib.ko */
 	hal_local_users = 0;
 	hal_segment_unmap();
 }
@@ -36,6 +37,7 @@ EXPORT_SYMBOL(hal_malloc);
 EXPORT_SYMBOL(hal_set_constructor);
 EXPORT_SYMBOL(hal_set_load_context);
 EXPORT_SYMBOL(hal_exit_module_comps);
+EXPORT_SYMBOL(hal_exit_threads);
 EXPORT_SYMBOL(hal_pin_new);
 EXPORT_SYMBOL(hal_pin_bit_new);
 EXPORT_SYMBOL(hal_pin_bit_newf);

@@ -10,6 +10,8 @@
 #include <linux/module.h>
 #include <linux/moduleparam.h>
 #include <linux/init.h>
+#include <linux/slab.h>
+#include <linux/string.h>
 
 /* Permission 0444: values readable under /sys/module/NAME/parameters, never changed
  * behind the component's back after init. */
@@ -38,12 +40,20 @@ int hal_exit_module_comps(const char *module);
 
 static int __init rtapi_kmod_app_init(void)
 {
+	/* insmod leaves a blank after the last argument: "show comp" and "save" get
+	 * the arguments as halcmd's loadrt line had them. */
+	char *args = kstrdup(THIS_MODULE->args ? THIS_MODULE->args : "", GFP_KERNEL);
 	int rc;
 
-	hal_set_load_context(KBUILD_MODNAME, THIS_MODULE->args);
+	hal_set_load_context(KBUILD_MODNAME, args ? strim(args) : THIS_MODULE->args);
 	rc = rtapi_app_main();
 	hal_set_load_context(NULL, NULL);
+	kfree(args);
 	if (rc) {
+		/* halcmd finds this line in /proc/rtapi/messages and words it as the
+		 * simulated flavor does (hal::kmod, kmod.cpp): keep the two in step. */
+		rtapi_print_msg(RTAPI_MSG_ERR, "%s: rtapi_app_main failed (%d)\n",
+				KBUILD_MODNAME, rc);
 		hal_exit_module_comps(KBUILD_MODNAME);
 		return rc < 0 ? rc : -EINVAL;
 	}

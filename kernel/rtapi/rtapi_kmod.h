@@ -29,10 +29,15 @@ int rtapi_proc_kmod_init(void);
 void rtapi_proc_kmod_exit(void);
 void rtapi_task_kmod_exit(void);	/* stops tasks left behind (a bug in some module) */
 
+/* rtapi_print_kmod.c: formats, keeps in the message ring and prints one message
+ * unless 'level' is above the message level (RTAPI_MSG_ALL: always). */
+void rtapi_vprint_msg_kmod(int level, const char *fmt, va_list ap);
+
 /* /proc/rtapi writers: each prints its table (rtapi_kmod_lock taken inside). */
 struct seq_file;
 void rtapi_module_show(struct seq_file *m);
 void rtapi_task_show(struct seq_file *m);
 void rtapi_shmem_show(struct seq_file *m);
+void rtapi_message_show(struct seq_file *m);	/* "next SEQ", then "SEQ LEVEL TEXT" lines */
 
 #endif /* RTAPI_KMOD_H */

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: GPL-2.0-or-later */
-/* rtapi_proc_kmod.c - /proc/rtapi/{modules,tasks,shmem}: what rtapi.ko holds, for
+/* rtapi_proc_kmod.c - /proc/rtapi/{modules,tasks,shmem,messages}: what rtapi.ko holds, for
  * people and tests (kernel flavor). */
 #include <linux/module.h>
 #include <linux/proc_fs.h>
@@ -11,6 +11,7 @@ static struct proc_dir_entry *dir;
 static int modules_show(struct seq_file *m, void *v) { rtapi_module_show(m); return 0; }
 static int tasks_show(struct seq_file *m, void *v) { rtapi_task_show(m); return 0; }
 static int shmem_show(struct seq_file *m, void *v) { rtapi_shmem_show(m); return 0; }
+static int messages_show(struct seq_file *m, void *v) { rtapi_message_show(m); return 0; }
 
 int rtapi_proc_kmod_init(void)
 {
@@ -19,7 +20,8 @@ int rtapi_proc_kmod_init(void)
 		goto fail;
 	if (!proc_create_single("modules", 0444, dir, modules_show) ||
 	    !proc_create_single("tasks", 0444, dir, tasks_show) ||
-	    !proc_create_single("shmem", 0444, dir, shmem_show))
+	    !proc_create_single("shmem", 0444, dir, shmem_show) ||
+	    !proc_create_single("messages", 0444, dir, messages_show))
 		goto fail;
 	return 0;
 fail:

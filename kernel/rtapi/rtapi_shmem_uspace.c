@@ -3,7 +3,9 @@
  * simulated-realtime flavor, both builds, on POSIX shared memory; naming and the
  * header page are described in rtapi_shmem_uspace.h. Within one process each key is
  * mapped once and shared by all modules that asked for it; every module attachment,
- * in any process, holds one reference in the header. */
+ * in any process, holds one reference in the header. A userspace program (ULAPI)
+ * running with the kernel flavor uses rtapi.ko's segments instead: each entry point
+ * hands over to rtapi_shmem_ulapi_kmod.c then. */
 #include <dirent.h>
 #include <fcntl.h>
 #include <pthread.h>
@@ -17,6 +19,12 @@
 #include "rtapi.h"
 #include "rtapi_shmem_uspace.h"
 #include "rtapi_uspace.h"
+#include "rtapi_shmem_ulapi_kmod.h"
+#ifdef ULAPI
+#define KERNEL_FLAVOR() rtapi_shmem_kmod_active()
+#else
+#define KERNEL_FLAVOR() 0	/* rtapi_app is the simulated flavor's module host */
+#endif
 
 #define RTAPI_MAX_SHMEMS 32
 #define SHM_HDR_SIZE 4096		/* keeps the user's area page aligned */
@@ -261,6 +269,8 @@ int rtapi_shmem_new(int key, int module_id, unsigned long int size)
 				"come from rtapi_init\n", (unsigned)key, module_id);
 		return -EINVAL;
 	}
+	if (KERNEL_FLAVOR())
+		return rtapi_shmem_new_kmod(key, module_id, size);
 	pthread_mutex_lock(&shm_lock);
 	ret = shmem_new_locked(key, module_id, size);
 	pthread_mutex_unlock(&shm_lock);
@@ -288,6 +298,8 @@ int rtapi_shmem_delete(int shmem_id, int module_id)
 	struct shm_rec *s;
 	int ret = -EINVAL;
 
+	if (KERNEL_FLAVOR())
+		return rtapi_shmem_delete_kmod(shmem_id, module_id);
 	pthread_mutex_lock(&shm_lock);
 	s = (shmem_id >= 1 && shmem_id <= RTAPI_MAX_SHMEMS) ? &shms[shmem_id] : NULL;
 	if (s && s->in_use && module_id >= 1 && module_id <= RTAPI_MAX_MODULES &&
@@ -306,6 +318,10 @@ void rtapi_shmem_module_exit(int module_id)
 {
 	int id;
 
+	if (KERNEL_FLAVOR()) {
+		rtapi_shmem_module_exit_kmod(module_id);
+		return;
+	}
 	pthread_mutex_lock(&shm_lock);
 	for (id = 1; id <= RTAPI_MAX_SHMEMS; id++)
 		if (shms[id].in_use && shms[id].attached[module_id])
@@ -318,6 +334,8 @@ int rtapi_shmem_getptr(int shmem_id, void **ptr)
 {
 	struct shm_rec *s;
 
+	if (KERNEL_FLAVOR())
+		return rtapi_shmem_getptr_kmod(shmem_id, ptr);
 	if (shmem_id < 1 || shmem_id > RTAPI_MAX_SHMEMS || !ptr)
 		return -EINVAL;
 	s = &shms[shmem_id];
@@ -336,6 +354,8 @@ int rtapi_shmem_force_unlink_all(void)
 
 	if (err)
 		return err;
+	if (KERNEL_FLAVOR())
+		return 0;	/* rtapi.ko frees its segments when their modules go */
 	dir = opendir("/dev/shm");
 	if (!dir) {
 		err = errno;

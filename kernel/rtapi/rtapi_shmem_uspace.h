@@ -13,7 +13,8 @@ extern "C" {
 
 /* For `halrun -U`: unlink every segment of this user and RTAPI_INSTANCE, whoever holds
  * it (mappings stay valid until unmapped). Returns how many were unlinked, or -errno
- * when /dev/shm cannot be read. */
+ * when /dev/shm cannot be read. With the kernel flavor (rtapi_shmem_ulapi_kmod.h)
+ * there is nothing to unlink: returns 0. */
 int rtapi_shmem_force_unlink_all(void);
 
 #ifdef __cplusplus

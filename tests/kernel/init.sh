@@ -4,10 +4,12 @@
 #   KTEST <case> PASS|FAIL
 # per case and "KTEST-DONE <passed> <failed>" last, which the host script parses.
 /bin/busybox --install -s /bin
+# emc_module_helper runs /sbin/insmod and /sbin/rmmod (compiled in)
+mkdir -p /sbin && ln -s /bin/busybox /sbin/insmod && ln -s /bin/busybox /sbin/rmmod
 mount -t proc proc /proc
 mount -t sysfs sysfs /sys
 mount -t devtmpfs devtmpfs /dev
-export PATH=/bin:/sbin:/tests PATH_MOD=/lib/rtmod
+export PATH=/bin:/sbin:/tests PATH_MOD=/lib/hal/modules/$(uname -r)
 echo
 pass=0 fail=0
 for t in /tests/cases/*.sh; do

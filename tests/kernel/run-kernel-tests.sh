@@ -1,8 +1,10 @@
 #!/bin/sh
 # run-kernel-tests.sh - kernel-flavor tests: builds the modules against Debian's
-# linux-headers-<ver>-amd64, packs them with busybox and the static test tools into
-# an initramfs, boots /boot/vmlinuz-<ver> in qemu (TCG, no KVM needed), runs
-# tests/kernel/cases/*.sh inside and reports from the serial console.
+# linux-headers-<ver>-amd64 and static halcmd/halrun/halsampler/halstreamer/
+# emc_module_helper (build/static), packs them with busybox, the HAL-level tests
+# (tests/*/*/) and tests/kernel/cases into an initramfs, boots /boot/vmlinuz-<ver>
+# in qemu (TCG, no KVM needed), runs the cases inside (10-hal-suite runs the whole
+# HAL-level suite in the kernel flavor) and reports from the serial console.
 # Usage: run-kernel-tests.sh [KERNEL_RELEASE]   (default: newest installed non-rt -amd64;
 #        e.g. 6.1.0-56-rt-amd64 for the PREEMPT_RT kernel)
 # Needs: scripts/kernel-test-deps. Exit 0 when every case passed.
@@ -14,39 +16,67 @@ kver=${1:-$(ls /boot | sed -n 's/^vmlinuz-\(.*-amd64\)$/\1/p' | grep -v -- -rt- 
 kdir=/usr/src/linux-headers-$kver
 [ -d "$kdir" ] || { echo "no $kdir: run scripts/kernel-test-deps" >&2; exit 2; }
 out=${KTEST_BUILD:-$root/build/kmod-test/$kver}
-timeout_s=${KTEST_TIMEOUT:-300}
+static=${KTEST_STATIC_BUILD:-$root/build/static}
+timeout_s=${KTEST_TIMEOUT:-900}
+vm_moddir=/lib/hal/modules	# compiled into the static tools and helper
+start=$(date +%s)
 
 mkdir -p "$out"
 echo "== building modules for $kver"
-make -s -f "$root/kernel/Makefile.kmod" KDIR="$kdir" KMOD_BUILD="$out/modules" ${KMOD_CFLAGS:+KCFLAGS="$KMOD_CFLAGS"} >"$out.build.log" 2>&1 ||
+# KTEST_MANIFEST: build and test only the modules listed there (default: all)
+make -s -f "$root/kernel/Makefile.kmod" KDIR="$kdir" KMOD_BUILD="$out/modules" \
+	${KTEST_MANIFEST:+KMOD_MANIFEST="$KTEST_MANIFEST"} ${KMOD_CFLAGS:+KCFLAGS="$KMOD_CFLAGS"} >"$out.build.log" 2>&1 ||
 	{ mkdir -p "$out"; cat "$out.build.log" >&2; exit 1; }
+
+# Static tools: the VM has no libc. Same sources as build/, linked -static, with the
+# VM's module directory compiled into emc_module_helper and hal::kmod.
+echo "== building static tools ($static)"
+libdir=$(gcc -print-multiarch 2>/dev/null || echo x86_64-linux-gnu)
+{ cmake -S "$root" -B "$static" -DCMAKE_BUILD_TYPE=Release -DCMAKE_EXE_LINKER_FLAGS=-static \
+	"-DREADLINE_LIBRARY=/usr/lib/$libdir/libreadline.a;/usr/lib/$libdir/libtinfo.a" \
+	-DHAL_KMOD_INSTALL_DIR=$vm_moddir -DCMAKE_INSTALL_PREFIX=/usr &&
+  cmake --build "$static" -j"$(nproc)" --target halcmd halrun halsampler halstreamer emc_module_helper
+} >"$out.static.log" 2>&1 || { cat "$out.static.log" >&2; exit 1; }
 
 echo "== building the initramfs"
 rm -rf "$out/initramfs"
-mkdir -p "$out/initramfs/bin" "$out/initramfs/lib/rtmod" "$out/initramfs/tests/cases" \
-	"$out/initramfs/proc" "$out/initramfs/sys" "$out/initramfs/dev"
-cp /bin/busybox "$out/initramfs/bin/busybox"
+ird=$out/initramfs
+mkdir -p "$ird/bin" "$ird$vm_moddir/$kver" "$ird/tests/cases" "$ird/tests/hal" \
+	"$ird/proc" "$ird/sys" "$ird/dev" "$ird/tmp"
+cp /bin/busybox "$ird/bin/busybox"
 file -L /bin/busybox | grep -q 'statically linked' ||
 	{ echo "/bin/busybox is not static: install busybox-static" >&2; exit 2; }
 for ko in $(find "$out/modules" -name '*.ko'); do
-	strip --strip-debug -o "$out/initramfs/lib/rtmod/${ko##*/}" "$ko"
+	strip --strip-debug -o "$ird$vm_moddir/$kver/${ko##*/}" "$ko"
 done
+for tool in halcmd halrun halsampler halstreamer emc_module_helper; do
+	strip -o "$ird/bin/$tool" "$static/bin/$tool"
+done
+# the HAL-level tests: every tests/<component>/<case>/ (not unit/, not kernel/), or
+# only the directories named in KTEST_HAL_DIRS (e.g. "and2 halcmd")
+for d in "$root"/tests/*/; do
+	case ${d%/} in */unit|*/kernel) continue ;; esac
+	[ -z "${KTEST_HAL_DIRS:-}" ] || case " $KTEST_HAL_DIRS " in *" $(basename "$d") "*) ;; *) continue ;; esac
+	cp -r "${d%/}" "$ird/tests/hal/"
+done
+cp "$here/run-hal-tests-vm.sh" "$ird/tests/"
 cc -static -O2 -Wall -I"$root/kernel/rtapi" -I"$root/kernel/hal" \
 	-o "$out/initramfs/tests/hal_segcheck" "$here/hal_segcheck.c"
-cp "$here/init.sh" "$out/initramfs/init"
-cp "$here"/cases/*.sh "$out/initramfs/tests/cases/"
-chmod +x "$out/initramfs/init"
-(cd "$out/initramfs" && find . | cpio -o -H newc --quiet | gzip -1) >"$out/initramfs.cpio.gz"
+cp "$here/init.sh" "$ird/init"
+cp "$here"/cases/*.sh "$ird/tests/cases/"
+chmod +x "$ird/init"
+(cd "$ird" && find . | cpio -o -H newc --quiet | gzip -1) >"$out/initramfs.cpio.gz"
 
 echo "== booting $kver in qemu (TCG)"
 log=$out/console.log
-timeout "$timeout_s" qemu-system-x86_64 -machine q35 -accel tcg -cpu max -m 512 -smp 2 \
+timeout "$timeout_s" qemu-system-x86_64 -machine q35 -accel tcg -cpu max -m 768 -smp 2 \
 	-nographic -no-reboot -kernel "/boot/vmlinuz-$kver" -initrd "$out/initramfs.cpio.gz" \
 	-append "console=ttyS0 edd=off panic=-1 oops=panic rdinit=/init loglevel=4" \
 	</dev/null >"$log" 2>&1 || true
 tr -d '\r' <"$log" >"$log.txt"
 
-grep -E '^(KTEST|FAILED:)' "$log.txt" || true
+grep -E '^(KTEST|FAILED:|HALTEST|\| |HAL tests)' "$log.txt" || true
+echo "($kver: $(($(date +%s) - start)) s)"
 done_line=$(grep '^KTEST-DONE' "$log.txt" || true)
 if [ -z "$done_line" ]; then
 	echo "kernel tests did not finish (crash or timeout); console: $log.txt" >&2

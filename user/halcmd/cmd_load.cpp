@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // cmd_load.cpp - loadrt, unloadrt, loadusr, unloadusr, waitusr, unload (halcmd(1)).
-// Realtime modules go through rtapi_app (rtapi_client.hpp); userspace components are
+// Realtime modules go to rtapi_app or the kernel (realtime.hpp); userspace components are
 // programs we fork/exec and later SIGTERM by the pid their component records.
 #include <fcntl.h>
 #include <signal.h>
@@ -14,7 +14,7 @@
 
 #include "commands.hpp"
 #include "hal_query.h"
-#include "rtapi_client.hpp"
+#include "realtime.hpp"
 #include "session.hpp"
 #include "snapshot.hpp"
 
@@ -159,7 +159,7 @@ Result<void> cmd_loadrt(Session& s, Args args)
     if (auto r = require_unlocked(HAL_LOCK_LOAD, "loadrt"); !r)
         return r;
     std::vector<std::string> margs(args.begin() + 1, args.end());
-    Result<void> r = hal::rtapi_load(args[0], margs);
+    Result<void> r = rt_load(args[0], margs);
     if (!r)
         return Error{r.error().code, r.error().message};
     s.info("Realtime module '" + args[0] + "' loaded");
@@ -170,7 +170,7 @@ Result<void> cmd_unloadrt(Session& s, Args args)
 {
     if (auto r = require_unlocked(HAL_LOCK_LOAD, "unloadrt"); !r)
         return r;
-    Result<void> r = hal::rtapi_unload(args[0]);
+    Result<void> r = rt_unload(args[0]);
     if (!r)
         return Error{r.error().code, r.error().message};
     s.info(args[0] == "all" ? "All realtime modules unloaded" : "Realtime module '" + args[0] + "' unloaded");
@@ -265,7 +265,7 @@ Result<void> cmd_unload(Session& s, Args args)
     if (name == "all") {
         if (auto r = unload_user_components(&s, "all"); !r)
             return r;
-        Result<void> r = hal::rtapi_unload("all");
+        Result<void> r = rt_unload("all");
         if (!r)
             return Error{r.error().code, r.error().message};
         return ok();
@@ -275,7 +275,7 @@ Result<void> cmd_unload(Session& s, Args args)
         return Error{-ENOENT, "unload: no component named '" + name + "'"};
     if (!c.is_realtime)
         return unload_user_components(&s, name);
-    Result<void> r = hal::rtapi_unload(c.module[0] ? std::string(c.module) : name);
+    Result<void> r = rt_unload(c.module[0] ? std::string(c.module) : name);
     if (!r)
         return Error{r.error().code, r.error().message};
     return ok();

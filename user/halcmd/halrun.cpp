@@ -11,7 +11,8 @@
 #include "commands.hpp"
 #include "hal_query.h"
 #include "options.hpp"
-#include "rtapi_client.hpp"
+#include "hal/kmod.hpp"
+#include "realtime.hpp"
 #include "session.hpp"
 #include "snapshot.hpp"
 
@@ -43,7 +44,7 @@ void refuse_second_session()
              "); end it with 'halrun -U'");
 }
 
-// Stop threads, unload userspace components and realtime modules, stop rtapi_app.
+// Stop threads, unload userspace components and realtime modules.
 // Returns false if something could not be undone (each problem printed once).
 bool teardown_attached()
 {
@@ -55,8 +56,8 @@ bool teardown_attached()
         complain(r.error().message);
         ok = false;
     }
-    if (hal::rtapi_running()) {
-        if (auto r = hal::rtapi_unload("all"); !r) {
+    if (rt_running()) {
+        if (auto r = rt_unload("all"); !r) {
             complain(r.error().message);
             ok = false;
         }
@@ -64,13 +65,14 @@ bool teardown_attached()
     return ok;
 }
 
-// After the last user detached: stop rtapi_app and drop the segments, so signals
-// made by halcmd itself do not leak into the next session.
+// After the last user detached: stop rtapi_app and drop the segments (sim), or
+// unload hal_lib and rtapi (kernel), so signals made by halcmd itself do not leak
+// into the next session.
 bool shutdown_realtime()
 {
     bool ok = true;
-    if (hal::rtapi_running()) {
-        if (auto r = hal::rtapi_shutdown(); !r) {
+    if (kernel_flavor() || rt_running()) {
+        if (auto r = rt_shutdown(); !r) {
             complain(r.error().message);
             ok = false;
         }
@@ -81,7 +83,8 @@ bool shutdown_realtime()
 
 int force_exit()
 {
-    if (hal_attach() == 0) {
+    // kernel: attaching must not load hal_lib just to unload it again
+    if ((!kernel_flavor() || hal::kmod::module_loaded("hal_lib")) && hal_attach() == 0) {
         hal_release_mutex();
         teardown_attached();
         hal_detach();
@@ -92,7 +95,7 @@ int force_exit()
 
 int run_session(const HalrunOptions& opts)
 {
-    if (hal::rtapi_running()) {
+    if (rt_running()) {
         refuse_second_session();
         return 1;
     }
@@ -129,6 +132,10 @@ int main(int argc, char** argv)
         return 1;
     }
     try {
+        if (auto r = select_flavor(opts->halcmd.flavor); !r) {
+            complain(r.error().message);
+            return 1;
+        }
         if (opts->force_exit)
             return force_exit();
         if (opts->halcmd.help) {

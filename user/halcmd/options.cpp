@@ -10,6 +10,24 @@ static Error usage_error(std::string msg)
     return Error{-22, std::move(msg) + " (try 'halcmd -h')"};
 }
 
+// "--flavor=F" or "--flavor F" at args[i] (i moves past F).
+static Result<std::string> take_flavor(std::span<const std::string> args, size_t& i)
+{
+    const std::string& a = args[i];
+    std::string f;
+    if (a.rfind("--flavor=", 0) == 0)
+        f = a.substr(9);
+    else if (a == "--flavor" && i + 1 < args.size())
+        f = args[++i];
+    else if (a == "--flavor")
+        return usage_error("option --flavor needs kernel or sim");
+    else
+        return usage_error("unknown option '" + a + "'");
+    if (f != "kernel" && f != "sim")
+        return usage_error("--flavor=" + f + ": must be kernel or sim");
+    return f;
+}
+
 Result<Options> parse_halcmd_options(std::span<const std::string> args)
 {
     Options o;
@@ -19,6 +37,13 @@ Result<Options> parse_halcmd_options(std::span<const std::string> args)
         if (a == "--") {
             i++;
             break;
+        }
+        if (a.rfind("--flavor", 0) == 0) {
+            auto f = take_flavor(args, i);
+            if (!f)
+                return f.error();
+            o.flavor = *f;
+            continue;
         }
         if (a.size() < 2 || a[0] != '-')
             break;                       // first command word
@@ -79,6 +104,17 @@ static bool ends_with(const std::string& s, std::string_view suffix)
 Result<HalrunOptions> parse_halrun_options(std::span<const std::string> args)
 {
     HalrunOptions h;
+    std::string flavor;
+    size_t skip = 0;                     // leading --flavor options
+    while (skip < args.size() && args[skip].rfind("--flavor", 0) == 0) {
+        auto f = take_flavor(args, skip);
+        if (!f)
+            return f.error();
+        flavor = *f;
+        skip++;
+    }
+    args = args.subspan(skip);
+    h.halcmd.flavor = flavor;
     for (size_t i = 0; i < args.size(); i++) {
         if (args[i] == "-U") {
             if (args.size() != 1)
@@ -98,6 +134,8 @@ Result<HalrunOptions> parse_halrun_options(std::span<const std::string> args)
     if (!o)
         return o.error();
     h.halcmd = std::move(*o);
+    if (h.halcmd.flavor.empty())
+        h.halcmd.flavor = flavor;
     // "halrun file.hal" means "halcmd -f file.hal"
     if (!h.halcmd.from_file && h.halcmd.command.size() == 1 && ends_with(h.halcmd.command[0], ".hal")) {
         h.halcmd.from_file = true;

@@ -24,6 +24,7 @@ struct Options {
     bool help = false;                // -h
     std::string help_topic;           // -h COMMAND
     std::vector<std::string> command; // a command given on the command line
+    std::string flavor;               // --flavor=kernel|sim; empty: HAL_FLAVOR or detection
 };
 
 struct HalrunOptions {
@@ -34,7 +35,7 @@ struct HalrunOptions {
 
 // args exclude argv[0]. Options stop at the first word that is not one (the command).
 Result<Options> parse_halcmd_options(std::span<const std::string> args);
-// halrun [-I] [halcmd options] [file.hal] | halrun -U
+// halrun [--flavor=F] [-I] [halcmd options] [file.hal] | halrun [--flavor=F] -U
 Result<HalrunOptions> parse_halrun_options(std::span<const std::string> args);
 
 }  // namespace hal::halcmd

@@ -11,6 +11,7 @@
 
 #include "commands.hpp"
 #include "hal_query.h"
+#include "realtime.hpp"
 
 namespace hal::halcmd {
 
@@ -211,6 +212,14 @@ bool Session::start()
         ini_ = std::move(*ini);
     }
     subs_ = process_substitutions(ini_ ? &*ini_ : nullptr);
+    // The kernel flavor's HAL segment exists while hal_lib.ko is loaded.
+    Result<void> flavor = select_flavor(opts_.flavor);
+    if (flavor)
+        flavor = rt_prepare();
+    if (!flavor) {
+        report(flavor.error());
+        return false;
+    }
     captured_.clear();
     Result<void> r = check(hal_attach(), "cannot attach to the HAL shared memory");
     if (!r) {

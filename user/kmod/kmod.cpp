@@ -51,19 +51,31 @@ Result<FlavorChoice> detect_flavor()
 {
     if (const char* env = std::getenv("HAL_FLAVOR"); env && *env) {
         std::string f = env;
-        if (f == "kmod")
-            return FlavorChoice{Flavor::kmod, "HAL_FLAVOR=kmod"};
-        if (f == "uspace")
-            return FlavorChoice{Flavor::uspace, "HAL_FLAVOR=uspace"};
-        return Error{-EINVAL, "HAL_FLAVOR='" + f + "': must be kmod or uspace"};
+        if (f == "kernel" || f == "kmod")
+            return FlavorChoice{Flavor::kmod, "HAL_FLAVOR=" + f};
+        if (f == "sim" || f == "uspace")
+            return FlavorChoice{Flavor::uspace, "HAL_FLAVOR=" + f};
+        return Error{-EINVAL, "HAL_FLAVOR='" + f + "': must be kernel or sim"};
     }
     std::error_code ec;
     if (fs::exists("/proc/rtapi", ec))
         return FlavorChoice{Flavor::kmod, "rtapi.ko is loaded"};
-    fs::path mods = fs::path(HAL_KMOD_INSTALL_DIR) / kernel_release() / "rtapi.ko";
+    fs::path mods = fs::path(module_dir()) / "rtapi.ko";
     if (fs::exists(mods, ec) && access(helper_path().c_str(), X_OK) == 0)
         return FlavorChoice{Flavor::kmod, "modules installed for kernel " + kernel_release()};
     return FlavorChoice{Flavor::uspace, "no kernel modules for kernel " + kernel_release()};
+}
+
+const char* flavor_name(Flavor f)
+{
+    return f == Flavor::kmod ? "kernel" : "sim";
+}
+
+std::string module_dir()
+{
+    if (const char* env = std::getenv("HAL_KMOD_DIR"); env && *env)
+        return env;
+    return std::string(HAL_KMOD_INSTALL_DIR) + "/" + kernel_release();
 }
 
 std::vector<std::string> loaded_modules()

@@ -20,6 +20,7 @@
 #include <exception>
 #include <string>
 
+#include "hal_host.h"
 #include "module_args.hpp"
 #include "module_host.hpp"
 #include "protocol.hpp"
@@ -78,7 +79,8 @@ Reply handle_request(ModuleHost& host, std::string_view line)
     if (verb == "unload" && !rest.empty() && rest.find(' ') == std::string_view::npos) {
         auto r = host.unload(std::string(rest));
         Reply reply = r ? ok_reply() : error_reply(r.error().code, r.error().message);
-        reply.should_exit = host.empty();  // the last module went: nothing left to host
+        // The last module went and no thread outlived it (threads(9)): nothing left to host.
+        reply.should_exit = host.empty() && hal_thread_count() == 0;
         return reply;
     }
     if (verb == "load" && !rest.empty()) {

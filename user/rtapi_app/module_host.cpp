@@ -222,6 +222,7 @@ Result<void> ModuleHost::unload(const std::string& name)
             unload_one(*loaded_.back());
             loaded_.pop_back();
         }
+        hal_exit_threads();  // threads outlive the module that made them, not the host
         return {};
     }
     auto it = std::find_if(loaded_.begin(), loaded_.end(),

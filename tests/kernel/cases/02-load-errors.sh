@@ -14,6 +14,9 @@ check 'hal_segcheck | grep -q "functs=2 "'
 rmmod and2
 check 'hal_segcheck | grep -q "comps=0 pins=0 params=0 sigs=0 functs=0 "'
 check '! insmod $M/threads.ko name1=fast period1=10 2>/dev/null'	# below the 1 us minimum
+# the module's own message reaches /proc/rtapi/messages, for halcmd to show
+check 'grep -q "period 10 ns is too short" /proc/rtapi/messages'
+check 'grep -q "threads: rtapi_app_main failed (-22)" /proc/rtapi/messages' 
 check '[ "$(grep -c "^[0-9]" /proc/rtapi/tasks)" = 0 ]'
 check 'hal_segcheck | grep -q "threads=0 "'
 # two threads, the second slower: two SCHED_FIFO tasks, rate-monotonic priorities
@@ -23,7 +26,11 @@ check '[ "$(grep -c running /proc/rtapi/tasks)" = 2 ]'
 check 'grep -q "^[0-9].* 98 *1 *1000000 " /proc/rtapi/tasks'
 check 'grep -q "^[0-9].* 97 *0 *2000000 " /proc/rtapi/tasks'
 rmmod threads
-# the clock period is free again once every task is gone
+# the threads stay (threads(9)) until hal_lib goes; then the clock period is free again
+check '[ "$(grep -c running /proc/rtapi/tasks)" = 2 ]'
+rmmod hal_lib
+check '[ "$(grep -c "^[0-9]" /proc/rtapi/tasks)" = 0 ]'
+insmod $M/hal_lib.ko
 insmod $M/threads.ko name1=other period1=500000
 check 'grep -q "clock period: 500000 ns" /proc/rtapi/tasks'
 rmmod threads

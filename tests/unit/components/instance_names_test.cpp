@@ -96,7 +96,7 @@ TEST_F(InstanceNames, OverlongNameIsRefused)
     std::string longname(HAL_NAME_LEN + 1, 'n');
     char* names[4] = {longname.data()};
     EXPECT_EQ(instance_count("not", "count", -1, names, 4, 64), -EINVAL);
-    EXPECT_NE(last_message.find("longer than 47 characters"), std::string::npos);
+    EXPECT_NE(last_message.find("longer than " + std::to_string(HAL_NAME_LEN) + " characters"), std::string::npos);
 }
 
 TEST_F(InstanceNames, MoreNamesThanTheMaximumAreRefused)

@@ -62,7 +62,7 @@ TEST_F(HalRt, ARealtimeComponentIsMarkedRealtimeWithoutPid)
     EXPECT_EQ(c->is_ready, 0);
 }
 
-TEST_F(HalRt, InitAcceptsANameOf47Characters)
+TEST_F(HalRt, InitAcceptsANameOfHalNameLenCharacters)
 {
     std::string name(HAL_NAME_LEN, 'c');
     int id = hal_init(name.c_str());
@@ -70,12 +70,12 @@ TEST_F(HalRt, InitAcceptsANameOf47Characters)
     EXPECT_EQ(hal_exit(id), 0);
 }
 
-TEST_F(HalRt, InitRefusesANameOf48CharactersWithEinval)
+TEST_F(HalRt, InitRefusesALongerNameWithEinval)
 {
     MsgCapture msgs;
     std::string name(HAL_NAME_LEN + 1, 'c');
     EXPECT_EQ(hal_init(name.c_str()), -EINVAL);
-    EXPECT_THAT(msgs.text(), HasSubstr("longer than 47 characters"));
+    EXPECT_THAT(msgs.text(), HasSubstr("longer than " + std::to_string(HAL_NAME_LEN) + " characters"));
     EXPECT_EQ(comp_rec(name), nullptr);
 }
 
@@ -167,18 +167,21 @@ TEST_F(HalRt, ExitReturnsEveryByteTheComponentUsed)
     ASSERT_EQ(hal_pin_bit_new("rt.gone.out", HAL_OUT, &pp->b[0], id), 0);
     ASSERT_EQ(hal_param_float_new("rt.gone.gain", HAL_RW, &vals->f, id), 0);
     ASSERT_EQ(hal_export_funct("rt.gone.f", [](void*, long) {}, nullptr, 1, 0, id), 0);
-    ASSERT_EQ(hal_create_thread("rt.gone.thread", 2000000, 1), 0);   // owned by rt.gone
+    ASSERT_EQ(hal_create_thread("rt.gone.thread", 2000000, 1), 0);   // made while rt.gone loads
     ASSERT_EQ(hal_add_funct_to_thread("rt.gone.f", "rt.keep", 1), 0);
     ASSERT_EQ(hal_link("rt.gone.in", "rt.reclaim"), 0);
     EXPECT_GT(hal_seg->bytes_used, used);
 
     ASSERT_EQ(hal_exit(id), 0);
-    EXPECT_EQ(hal_seg->bytes_used, used);
-    EXPECT_EQ(hal_seg->heap_top, top);
     EXPECT_EQ(sig_rec("rt.reclaim")->readers, 0);
     EXPECT_TRUE(thread_functs("rt.keep").empty());
-    EXPECT_EQ(thread_rec("rt.gone.thread"), nullptr);
+    // threads(9): a thread stands alone once created; deleting it returns the rest.
+    EXPECT_NE(thread_rec("rt.gone.thread"), nullptr);
+    EXPECT_NE(pin_rec("rt.gone.thread.time"), nullptr);
+    ASSERT_EQ(hal_thread_delete("rt.gone.thread"), 0);
     EXPECT_EQ(pin_rec("rt.gone.thread.time"), nullptr);
+    EXPECT_EQ(hal_seg->bytes_used, used);
+    EXPECT_EQ(hal_seg->heap_top, top);
 }
 
 TEST_F(HalRt, CreatesPinsOfEveryTypeAndDirection)
@@ -219,12 +222,12 @@ TEST_F(HalRt, NewfFormatsThePinName)
     EXPECT_NE(pin_rec("rt.07"), nullptr);
 }
 
-TEST_F(HalRt, NewfRefusesAFormattedNameLongerThan47Characters)
+TEST_F(HalRt, NewfRefusesAFormattedNameLongerThanHalNameLen)
 {
     MsgCapture msgs;
-    std::string tail(45, 'x');
+    std::string tail(HAL_NAME_LEN - 2, 'x');
     EXPECT_EQ(hal_pin_bit_newf(HAL_IN, &pins_->b[0], comp_, "rt.%s", tail.c_str()), -EINVAL);
-    EXPECT_THAT(msgs.text(), HasSubstr("longer than 47 characters"));
+    EXPECT_THAT(msgs.text(), HasSubstr("longer than " + std::to_string(HAL_NAME_LEN) + " characters"));
     EXPECT_EQ(pin_rec("rt." + tail), nullptr);
 }
 

@@ -101,10 +101,18 @@ TEST_F(HalRt, ExportRefusesAnUnknownComponent)
     EXPECT_THAT(msgs.text(), HasSubstr("function 'rt.f': component id 9999 does not exist"));
 }
 
+TEST_F(HalRt, ExportAcceptsA47CharacterNameWithItsTimingObjects)
+{
+    std::string name = "rt." + std::string(44, 'f');   // 47, as RULINGS.md promises
+    ASSERT_EQ(hal_export_funct(name.c_str(), nothing, nullptr, 0, 0, comp_), 0);
+    EXPECT_NE(pin_rec(name + ".time"), nullptr);
+    EXPECT_NE(param_rec(name + ".tmax"), nullptr);
+}
+
 TEST_F(HalRt, ExportOfANameTooLongForItsTimingObjectsLeavesNothingBehind)
 {
     rtapi_u32 used = hal_seg->bytes_used;
-    std::string name = "rt." + std::string(42, 'f');   // 45: fits, "<name>.time" does not
+    std::string name = "rt." + std::string(HAL_NAME_LEN - 5, 'f');   // fits, "<name>.time" does not
     EXPECT_LT(hal_export_funct(name.c_str(), nothing, nullptr, 0, 0, comp_), 0);
     EXPECT_EQ(funct_rec(name), nullptr);
     EXPECT_EQ(hal_seg->bytes_used, used);

@@ -133,7 +133,7 @@ TEST_F(HalIndex, RefusesADuplicateNameOfTheSameKindWithEexist)
     EXPECT_EQ(seg_->count[HAL_KIND_SIG], 1u);
 }
 
-TEST_F(HalIndex, AcceptsANameOf47Characters)
+TEST_F(HalIndex, AcceptsANameOfHalNameLenCharacters)
 {
     std::string name(HAL_NAME_LEN, 'n');
     int err;
@@ -142,14 +142,14 @@ TEST_F(HalIndex, AcceptsANameOf47Characters)
     EXPECT_NE(find(HAL_KIND_PARAM, name), nullptr);
 }
 
-TEST_F(HalIndex, RefusesANameOf48CharactersNamingTheLimit)
+TEST_F(HalIndex, RefusesALongerNameNamingTheLimit)
 {
     hal_test::MsgCapture msgs;
     std::string name(HAL_NAME_LEN + 1, 'n');
     int err;
     EXPECT_EQ(make(HAL_KIND_PARAM, name, &err), nullptr);
     EXPECT_EQ(err, -EINVAL);
-    EXPECT_THAT(msgs.text(), HasSubstr("longer than 47 characters"));
+    EXPECT_THAT(msgs.text(), HasSubstr("longer than " + std::to_string(HAL_NAME_LEN) + " characters"));
     EXPECT_EQ(seg_->count[HAL_KIND_PARAM], 0u);
     EXPECT_EQ(seg_->bytes_used, 0u);
 }
@@ -308,7 +308,7 @@ TEST_F(HalIndex, FormatNameFillsTheBuffer)
     EXPECT_STREQ(buf, "pid.3.Pgain");
 }
 
-TEST_F(HalIndex, FormatNameRefusesMoreThan47Characters)
+TEST_F(HalIndex, FormatNameRefusesMoreThanHalNameLenCharacters)
 {
     char buf[HAL_NAME_LEN + 1];
     std::string s47(HAL_NAME_LEN, 'x');
@@ -316,7 +316,7 @@ TEST_F(HalIndex, FormatNameRefusesMoreThan47Characters)
     hal_test::MsgCapture msgs;
     EXPECT_EQ(format(buf, "%s.", s47.c_str()), -EINVAL);
     EXPECT_THAT(msgs.text(), HasSubstr("pin name"));
-    EXPECT_THAT(msgs.text(), HasSubstr("longer than 47 characters"));
+    EXPECT_THAT(msgs.text(), HasSubstr("longer than " + std::to_string(HAL_NAME_LEN) + " characters"));
 }
 
 }  // namespace

@@ -81,6 +81,7 @@ void HalRt::TearDown()
     hal_stop_threads();
     for (const auto& s : sigs_)
         hal_signal_delete(s.c_str());
+    hal_exit_threads();  // threads outlive components (threads(9)); the host removes them
     if (comp_ > 0) {
         EXPECT_EQ(hal_exit(comp_), 0);
     }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "hal.h"
+#include "hal_host.h"
 #include "hal_test_internal.h"
 #include "msg_capture.hpp"
 

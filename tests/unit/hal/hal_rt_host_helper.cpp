@@ -9,6 +9,7 @@
 #include <cstring>
 
 #include "hal.h"
+#include "hal_host.h"
 
 namespace {
 
@@ -80,6 +81,7 @@ int main()
         std::fflush(stdout);
     }
     hal_exit(comp);
+    hal_exit_threads();  // the host's job when it shuts down: threads outlive components
     std::printf("bye\n");
     return 0;
 }

@@ -169,7 +169,7 @@ TEST_F(HalRtHost, TheToolCannotRemoveRealtimeObjects)
     EXPECT_EQ(hal_exit(c.id), -EPERM);
     EXPECT_THAT(msgs.text(), HasSubstr("component 'rthost' is realtime: unload it with unloadrt"));
     EXPECT_EQ(hal_thread_delete("rthost.thread"), -EPERM);
-    EXPECT_THAT(msgs.text(), HasSubstr("thread 'rthost.thread' belongs to realtime code"));
+    EXPECT_THAT(msgs.text(), HasSubstr("thread 'rthost.thread' belongs to the realtime host"));
     EXPECT_EQ(hal_find_comp("rthost", &c), 0);
 }
 

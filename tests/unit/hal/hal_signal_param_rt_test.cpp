@@ -261,7 +261,7 @@ TEST_F(HalRt, ParamNewfFormatsTheName)
     ASSERT_EQ(hal_param_u32_newf(HAL_RW, &v->u, comp_, "rt.%d.u", 2), 0);
     EXPECT_NE(param_rec("rt.2.Pgain"), nullptr);
     EXPECT_NE(param_rec("rt.2.u"), nullptr);
-    std::string tail(45, 'p');
+    std::string tail(HAL_NAME_LEN - 2, 'p');
     EXPECT_EQ(hal_param_u32_newf(HAL_RW, &v->u, comp_, "rt.%s", tail.c_str()), -EINVAL);
 }
 

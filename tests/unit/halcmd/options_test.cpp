@@ -147,3 +147,27 @@ TEST(HalrunOptions, CommandIsPassedThrough)
     EXPECT_TRUE(h->halcmd.keep_going);
     EXPECT_EQ(h->halcmd.command, (V{"show", "pin"}));
 }
+
+TEST(HalcmdOptions, FlavorChoosesKernelOrSim)
+{
+    EXPECT_EQ(parse_ok({"--flavor=kernel", "show"}).flavor, "kernel");
+    Options o = parse_ok({"--flavor", "sim", "-f", "x.hal"});
+    EXPECT_EQ(o.flavor, "sim");
+    EXPECT_EQ(o.file, "x.hal");
+    EXPECT_EQ(parse_ok({"show"}).flavor, "");
+    EXPECT_EQ(parse_err({"--flavor=rtai"}), "--flavor=rtai: must be kernel or sim (try 'halcmd -h')");
+    EXPECT_EQ(parse_err({"--flavor"}), "option --flavor needs kernel or sim (try 'halcmd -h')");
+}
+
+TEST(HalrunOptions, FlavorBeforeOtherOptions)
+{
+    auto u = parse_halrun_options(V{"--flavor=kernel", "-U"});
+    ASSERT_TRUE(u) << u.error().message;
+    EXPECT_TRUE(u->force_exit);
+    EXPECT_EQ(u->halcmd.flavor, "kernel");
+    auto i = parse_halrun_options(V{"--flavor", "sim", "-I", "x.hal"});
+    ASSERT_TRUE(i) << i.error().message;
+    EXPECT_TRUE(i->interactive);
+    EXPECT_EQ(i->halcmd.flavor, "sim");
+    EXPECT_EQ(i->halcmd.file, "x.hal");
+}

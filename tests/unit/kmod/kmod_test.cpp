@@ -113,7 +113,11 @@ TEST_F(Kmod, FlavorFromEnvironment)
     setenv("HAL_FLAVOR", "rtai", 1);
     auto bad = hal::kmod::detect_flavor();
     ASSERT_FALSE(bad);
-    EXPECT_EQ(bad.error().message, "HAL_FLAVOR='rtai': must be kmod or uspace");
+    EXPECT_EQ(bad.error().message, "HAL_FLAVOR='rtai': must be kernel or sim");
+    setenv("HAL_FLAVOR", "kernel", 1);
+    EXPECT_EQ(hal::kmod::detect_flavor()->flavor, hal::kmod::Flavor::kmod);
+    setenv("HAL_FLAVOR", "sim", 1);
+    EXPECT_EQ(hal::kmod::detect_flavor()->flavor, hal::kmod::Flavor::uspace);
 }
 
 TEST_F(Kmod, FlavorDefaultsToUspaceWithoutModules)
@@ -126,6 +130,91 @@ TEST_F(Kmod, FlavorDefaultsToUspaceWithoutModules)
         EXPECT_NE(f->reason.find("installed"), std::string::npos) << f->reason;
     else
         EXPECT_NE(f->reason.find("no kernel modules"), std::string::npos) << f->reason;
+}
+
+// --- load_module / unload_module: the checks made before the helper runs ---
+
+// A fake .ko: only its modinfo strings matter to declared_params().
+void write_fake_ko(const std::string& name)
+{
+    mkdir((dir + "/modules").c_str(), 0755);
+    std::ofstream f(dir + "/modules/" + name + ".ko", std::ios::binary);
+    using namespace std::string_literals;
+    f << "\0\x7f" "ELF junk\0parm=count:number\0parmtype=count:int\0"s
+      << "parmtype=names:array of charp\0name="s << name << '\0';
+}
+
+class KmodModules : public Kmod {
+protected:
+    void SetUp() override
+    {
+        Kmod::SetUp();
+        write_fake_ko("and2");
+        write_fake_ko("broken");
+        setenv("HAL_KMOD_DIR", (dir + "/modules").c_str(), 1);
+    }
+    void TearDown() override
+    {
+        unsetenv("HAL_KMOD_DIR");
+        Kmod::TearDown();
+    }
+};
+
+TEST_F(KmodModules, DeclaredParamsFromModinfo)
+{
+    auto p = hal::kmod::declared_params(dir + "/modules/and2.ko");
+    ASSERT_TRUE(p) << p.error().message;
+    EXPECT_EQ(*p, (std::vector<std::string>{"count", "names"}));
+    EXPECT_FALSE(hal::kmod::declared_params(dir + "/modules/none.ko"));
+}
+
+TEST_F(KmodModules, MissingModuleWordedAsInTheSimulatedFlavor)
+{
+    auto r = hal::kmod::load_module("nosuch", {});
+    ASSERT_FALSE(r);
+    EXPECT_EQ(r.error().code, -ENOENT);
+    EXPECT_EQ(r.error().message, "nosuch: no such realtime module (nosuch.ko is not in the module directory)");
+    EXPECT_EQ(read_log(), "");
+    EXPECT_FALSE(hal::kmod::load_module("rtapi", {}));   // not a component
+    EXPECT_EQ(hal::kmod::load_module("Bad/name", {}).error().message,
+              "Bad/name: invalid module name (use 1 to 31 of a-z, 0-9 and _)");
+}
+
+TEST_F(KmodModules, UndeclaredParameterIsRefusedBeforeInsmod)
+{
+    auto r = hal::kmod::load_module("and2", {"count=1", "bogus=3"});
+    ASSERT_FALSE(r);
+    EXPECT_EQ(r.error().message, "and2: unknown parameter 'bogus'");
+    EXPECT_EQ(read_log(), "");
+    EXPECT_EQ(hal::kmod::load_module("and2", {"count"}).error().message,
+              "and2: parameter 'count' has no value (use count=VALUE)");
+}
+
+TEST_F(KmodModules, LoadPassesArgumentsQuotingBlanks)
+{
+    if (hal::kmod::module_loaded("rtapi"))
+        GTEST_SKIP() << "rtapi.ko is loaded on this machine";
+    auto r = hal::kmod::load_module("and2", {"names=a b", "count=2"});
+    ASSERT_TRUE(r) << r.error().message;
+    EXPECT_EQ(read_log(), "insert rtapi\ninsert hal_lib\ninsert and2 names=\"a b\" count=2\n");
+}
+
+TEST_F(KmodModules, FailedInsertWithoutRingCarriesTheHelperMessage)
+{
+    if (hal::kmod::module_loaded("rtapi"))
+        GTEST_SKIP() << "rtapi.ko is loaded on this machine";
+    auto r = hal::kmod::load_module("broken", {"count=0"});
+    ASSERT_FALSE(r);
+    EXPECT_EQ(r.error().message, "broken: insmod: ERROR: could not insert module: Invalid parameters");
+}
+
+TEST_F(KmodModules, UnloadOfAModuleNotLoaded)
+{
+    auto r = hal::kmod::unload_module("and2");
+    ASSERT_FALSE(r);
+    EXPECT_EQ(r.error().message, "and2: not loaded");
+    EXPECT_TRUE(hal::kmod::unload_module("all"));    // nothing loaded: nothing to do
+    EXPECT_EQ(read_log(), "");
 }
 
 }  // namespace

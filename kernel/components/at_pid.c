@@ -1,0 +1,160 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
+/* at_pid.c - PID controller with relay auto tune, at_pid(9):
+ *   loadrt at_pid [num_chan=num | names=name1[,name2...]] [debug=dbg]
+ * It replaces pid (same pid.N. names, RULINGS.md: never load both). Three loops
+ * by default, at most 16. Per loop PREFIX: at_pid's subset of the pid pins
+ * (pid_pins.h; gains are I/O pins, the tune writes them), tune-mode (bit in),
+ * tune-start (bit io); parameters tune-type, tune-cycles (u32), tune-effort
+ * (float); with debug=1 also ultimate-gain and ultimate-period (float out).
+ * Function PREFIX.do-pid-calcs (uses FP). Tuning is at_pid_core.h. */
+#include "rtapi.h"
+#include "rtapi_app.h"
+#include "hal.h"
+#include "instance_names.h"
+#include "pid_core.h"
+#include "pid_pins.h"
+#include "at_pid_core.h"
+
+MODULE_LICENSE("GPL");
+MODULE_DESCRIPTION("PID controller with auto tuning");
+
+#define AT_PID_MAX 16
+#define AT_PID_DEFAULT 3
+
+static int num_chan = -1;	/* -1: not given */
+RTAPI_MP_INT(num_chan, "number of PID loops, 1..16 (default 3)");
+static char *names[AT_PID_MAX];
+RTAPI_MP_ARRAY_STRING(names, AT_PID_MAX, "names of the PID loops (instead of num_chan)");
+static int debug;
+RTAPI_MP_INT(debug, "1: export errorI, errorD, commandD, commandDD, ultimate-gain, ultimate-period");
+
+struct at_pid {			/* in hal_malloc() memory, one per loop */
+	struct pid_pins pins;
+	hal_bit_t *tune_mode;	/* in */
+	hal_bit_t *tune_start;	/* io: cleared by do-pid-calcs when tuning ends */
+	hal_float_t *ultimate_gain, *ultimate_period;	/* out, debug=1 only */
+	hal_u32_t tune_type, tune_cycles;	/* params, written by halcmd */
+	hal_float_t tune_effort;
+	struct pid_state st;	/* private to do-pid-calcs() */
+	struct at_pid_tune tune;	/* private to do-pid-calcs() */
+};
+
+static int comp_id;
+
+static void at_pid_write_gains(const struct pid_pins *p, const struct pid_gains *g)
+{
+	*p->Pgain = g->Pgain;
+	*p->Igain = g->Igain;
+	*p->Dgain = g->Dgain;
+	*p->FF1 = g->FF1;
+}
+
+static void at_pid_do_calcs(void *arg, long period_ns)
+{
+	struct at_pid *a = arg;
+	struct at_pid_tune_cfg c;
+	struct pid_gains g;
+	struct pid_in in;
+	struct pid_out o;
+	double relay = 0.0;
+	enum at_pid_tune_result r;
+
+	pid_pins_read(&a->pins, &g, &in);
+	c.tune_mode = *a->tune_mode;
+	c.tune_start = *a->tune_start;
+	c.tune_type = a->tune_type;
+	c.tune_cycles = a->tune_cycles;
+	c.tune_effort = a->tune_effort;
+	r = at_pid_tune_step(&a->tune, &c, in.enable, in.command - in.feedback, period_ns,
+			     &g, &relay);
+	if (r == AT_PID_RELAY || r == AT_PID_DONE) {
+		*a->pins.error = in.command - in.feedback;
+		*a->pins.output = relay;
+		a->st.primed = false;	/* restart the loop from scratch after tuning */
+		a->st.errorI = 0.0;
+		if (r == AT_PID_DONE) {
+			at_pid_write_gains(&a->pins, &g);
+			*a->tune_start = false;
+		}
+	} else {
+		if (r == AT_PID_ABORTED)
+			*a->tune_start = false;
+		pid_step(&a->st, &g, &in, period_ns, &o);
+		pid_pins_write(&a->pins, &o);
+	}
+	if (a->ultimate_gain) {
+		*a->ultimate_gain = a->tune.ultimate_gain;
+		*a->ultimate_period = a->tune.ultimate_period;
+	}
+}
+
+static int at_pid_export(struct at_pid *a, const char *prefix)
+{
+	char fn[HAL_NAME_LEN + 1];
+	int err;
+
+	err = pid_pins_export(&a->pins, comp_id, prefix, debug != 0, true);
+	if (!err)
+		err = hal_pin_bit_newf(HAL_IN, &a->tune_mode, comp_id, "%s.tune-mode", prefix);
+	if (!err)
+		err = hal_pin_bit_newf(HAL_IO, &a->tune_start, comp_id, "%s.tune-start", prefix);
+	if (!err && debug)
+		err = hal_pin_float_newf(HAL_OUT, &a->ultimate_gain, comp_id, "%s.ultimate-gain",
+					 prefix);
+	if (!err && debug)
+		err = hal_pin_float_newf(HAL_OUT, &a->ultimate_period, comp_id,
+					 "%s.ultimate-period", prefix);
+	if (!err)
+		err = hal_param_u32_newf(HAL_RW, &a->tune_type, comp_id, "%s.tune-type", prefix);
+	if (!err)
+		err = hal_param_u32_newf(HAL_RW, &a->tune_cycles, comp_id, "%s.tune-cycles",
+					 prefix);
+	if (!err)
+		err = hal_param_float_newf(HAL_RW, &a->tune_effort, comp_id, "%s.tune-effort",
+					   prefix);
+	if (err)
+		return err;
+	a->tune_cycles = 50;	/* half cycles averaged: enough to smooth noise */
+	*(volatile rtapi_u64 *)&a->tune_effort = 0x3fe0000000000000ULL;	/* 0.5 */
+	rtapi_snprintf(fn, sizeof(fn), "%s.do-pid-calcs", prefix);
+	return hal_export_funct(fn, at_pid_do_calcs, a, 1, 0, comp_id);
+}
+
+int rtapi_app_main(void)
+{
+	char prefix[HAL_NAME_LEN + 1];
+	struct at_pid *all;
+	int n, i, err;
+
+	if (debug != 0 && debug != 1) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "at_pid: debug=%d, must be 0 or 1\n", debug);
+		return -EINVAL;
+	}
+	if (num_chan < 0 && (!names[0] || !names[0][0]))
+		num_chan = AT_PID_DEFAULT;
+	n = instance_count("at_pid", "num_chan", num_chan, names, AT_PID_MAX, AT_PID_MAX);
+	if (n < 0)
+		return n;
+	comp_id = hal_init("at_pid");
+	if (comp_id < 0)
+		return comp_id;
+	all = hal_malloc(n * (long)sizeof(*all));
+	err = all ? 0 : -ENOMEM;
+	if (!all)
+		rtapi_print_msg(RTAPI_MSG_ERR, "at_pid: out of HAL memory for %d loops\n", n);
+	for (i = 0; !err && i < n; i++) {
+		instance_prefix(prefix, sizeof(prefix), "pid", names, i);
+		err = at_pid_export(&all[i], prefix);
+	}
+	if (err) {
+		hal_exit(comp_id);	/* removes every pin, parameter and function made so far */
+		return err;
+	}
+	hal_ready(comp_id);
+	return 0;
+}
+
+void rtapi_app_exit(void)
+{
+	hal_exit(comp_id);
+}

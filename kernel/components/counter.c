@@ -1,0 +1,157 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
+/* counter.c - counts input pulses, counter(9) (deprecated: encoder with
+ * counter-mode TRUE does the same): loadrt counter [num_chan=N].
+ * One channel by default, at most 8. Per channel counter.N:
+ *   pins phase-A phase-Z (bit in), index-enable reset (bit io), counts (s32 out),
+ *   position velocity (float out); params position-scale (float rw, default 1.0),
+ *   rawcounts (s32 ro).
+ * Functions counter.update-counters (no FP) and counter.capture-position (FP).
+ * Counting is encoder_core.h in counter mode; the velocity reads 0 below one
+ * count per second (counter has no min-speed-estimate). */
+#include "rtapi.h"
+#include "rtapi_app.h"
+#include "hal.h"
+#include "encoder_core.h"
+
+MODULE_LICENSE("GPL");
+MODULE_DESCRIPTION("pulse counter (deprecated, use encoder counter-mode)");
+
+#define COUNTER_MAX 8
+#define FLOAT_ONE_BITS 0x3ff0000000000000ULL	/* 1.0, stored without FP at init */
+
+static int num_chan = 1;
+RTAPI_MP_INT(num_chan, "number of counters, 1..8");
+
+struct counter_chan {		/* in hal_malloc() memory */
+	hal_bit_t *phase_a, *phase_z;	/* in */
+	hal_bit_t *index_enable;	/* io: cleared by capture-position on the index */
+	hal_bit_t *reset;	/* io, read by capture-position */
+	hal_s32_t *counts;	/* out, written by capture-position */
+	hal_float_t *position, *velocity;	/* out, written by capture-position */
+	hal_float_t scale;	/* param rw */
+	hal_s32_t rawcounts;	/* param ro, written by update-counters */
+	struct enc_update_state up;	/* private to update-counters */
+	struct enc_shared shared;	/* update-counters -> capture-position */
+	struct enc_acks acks;	/* capture-position -> update-counters */
+	struct enc_capture_state cap;	/* private to capture-position */
+};
+
+struct counter_set {		/* in hal_malloc() memory: the functions' argument */
+	int num;
+	struct counter_chan chan[];
+};
+
+static int comp_id;
+
+static void counter_update_counters(void *arg, long period_ns)
+{
+	struct counter_set *set = arg;
+	struct enc_update_in in = { .counter_mode = true, .x4_mode = true };
+	int i;
+
+	for (i = 0; i < set->num; i++) {
+		struct counter_chan *c = &set->chan[i];
+
+		in.a = *c->phase_a;
+		in.z = *c->phase_z;
+		in.index_enable = *c->index_enable;
+		c->rawcounts = enc_update(&c->up, &c->shared, &c->acks, &in, period_ns);
+	}
+}
+
+static void counter_capture_position(void *arg, long period_ns)
+{
+	struct counter_set *set = arg;
+	struct enc_capture_in in;
+	struct enc_capture_out o;
+	struct enc_shared snap;
+	double mag;
+	int i;
+
+	for (i = 0; i < set->num; i++) {
+		struct counter_chan *c = &set->chan[i];
+
+		enc_shared_read(&c->shared, &snap);
+		in.reset = *c->reset;
+		in.index_enable = *c->index_enable;
+		in.scale = c->scale;
+		mag = c->scale < 0.0 ? -c->scale : c->scale;
+		in.min_speed = mag > 1e-20 ? 1.0 / mag : 1.0;	/* one count per second */
+		enc_capture(&c->cap, &snap, &c->acks, &in, &o);
+		if (o.clear_index_enable)
+			*c->index_enable = false;
+		*c->counts = o.counts;
+		*c->position = o.position;
+		*c->velocity = o.velocity;
+	}
+}
+
+static int counter_export(struct counter_chan *c, int n)
+{
+	int err;
+
+	err = hal_pin_bit_newf(HAL_IN, &c->phase_a, comp_id, "counter.%d.phase-A", n);
+	if (!err)
+		err = hal_pin_bit_newf(HAL_IN, &c->phase_z, comp_id, "counter.%d.phase-Z", n);
+	if (!err)
+		err = hal_pin_bit_newf(HAL_IO, &c->index_enable, comp_id, "counter.%d.index-enable",
+				       n);
+	if (!err)
+		err = hal_pin_bit_newf(HAL_IO, &c->reset, comp_id, "counter.%d.reset", n);
+	if (!err)
+		err = hal_pin_s32_newf(HAL_OUT, &c->counts, comp_id, "counter.%d.counts", n);
+	if (!err)
+		err = hal_pin_float_newf(HAL_OUT, &c->position, comp_id, "counter.%d.position", n);
+	if (!err)
+		err = hal_pin_float_newf(HAL_OUT, &c->velocity, comp_id, "counter.%d.velocity", n);
+	if (!err)
+		err = hal_param_float_newf(HAL_RW, &c->scale, comp_id, "counter.%d.position-scale",
+					   n);
+	if (!err)
+		err = hal_param_s32_newf(HAL_RO, &c->rawcounts, comp_id, "counter.%d.rawcounts", n);
+	if (err)
+		return err;
+	*(volatile rtapi_u64 *)&c->scale = FLOAT_ONE_BITS;
+	return 0;
+}
+
+int rtapi_app_main(void)
+{
+	struct counter_set *set;
+	int n, err;
+
+	if (num_chan < 1 || num_chan > COUNTER_MAX) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "counter: num_chan=%d is out of range, must be 1..%d\n",
+				num_chan, COUNTER_MAX);
+		return -EINVAL;
+	}
+	comp_id = hal_init("counter");
+	if (comp_id < 0)
+		return comp_id;
+	set = hal_malloc((long)sizeof(*set) + num_chan * (long)sizeof(set->chan[0]));
+	err = set ? 0 : -ENOMEM;
+	if (!set)
+		rtapi_print_msg(RTAPI_MSG_ERR, "counter: out of HAL memory for %d channels\n",
+				num_chan);
+	else
+		set->num = num_chan;
+	for (n = 0; !err && n < num_chan; n++)
+		err = counter_export(&set->chan[n], n);
+	if (!err)
+		err = hal_export_funct("counter.update-counters", counter_update_counters, set, 0, 0,
+				       comp_id);
+	if (!err)
+		err = hal_export_funct("counter.capture-position", counter_capture_position, set, 1,
+				       0, comp_id);
+	if (err) {
+		hal_exit(comp_id);	/* removes every pin, parameter and function made so far */
+		return err;
+	}
+	hal_ready(comp_id);
+	return 0;
+}
+
+void rtapi_app_exit(void)
+{
+	hal_exit(comp_id);
+}

@@ -1,0 +1,96 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
+/* pid.c - proportional/integral/derivative controller, pid(9) and the PID section
+ * of the realtime components chapter:
+ *   loadrt pid [num_chan=num | names=name1[,name2...]] [debug=dbg]
+ * Three loops by default (RULINGS.md), at most 16. Per loop PREFIX (pid.N or the
+ * name): the pins of pid_pins.h and the function PREFIX.do-pid-calcs (uses FP),
+ * one per loop so loops may run in different threads. The math is pid_core.h. */
+#include "rtapi.h"
+#include "rtapi_app.h"
+#include "hal.h"
+#include "instance_names.h"
+#include "pid_core.h"
+#include "pid_pins.h"
+
+MODULE_LICENSE("GPL");
+MODULE_DESCRIPTION("PID controller");
+
+#define PID_MAX 16		/* pid(9): a maximum of sixteen controllers */
+#define PID_DEFAULT 3		/* pid(9): with neither num_chan= nor names= */
+
+static int num_chan = -1;	/* -1: not given */
+RTAPI_MP_INT(num_chan, "number of PID loops, 1..16 (default 3)");
+static char *names[PID_MAX];
+RTAPI_MP_ARRAY_STRING(names, PID_MAX, "names of the PID loops (instead of num_chan)");
+static int debug;
+RTAPI_MP_INT(debug, "1: export the errorI, errorD, commandD, commandDD, commandDDD pins");
+
+struct pid_loop {			/* in hal_malloc() memory, one per loop */
+	struct pid_pins pins;
+	struct pid_state st;	/* private to do_pid_calcs() */
+};
+
+static int comp_id;
+
+static void pid_do_calcs(void *arg, long period_ns)
+{
+	struct pid_loop *p = arg;
+	struct pid_gains g;
+	struct pid_in in;
+	struct pid_out o;
+
+	pid_pins_read(&p->pins, &g, &in);
+	pid_step(&p->st, &g, &in, period_ns, &o);
+	pid_pins_write(&p->pins, &o);
+}
+
+static int pid_export(struct pid_loop *p, const char *prefix)
+{
+	char fn[HAL_NAME_LEN + 1];
+	int err;
+
+	err = pid_pins_export(&p->pins, comp_id, prefix, debug != 0, false);
+	if (err)
+		return err;
+	rtapi_snprintf(fn, sizeof(fn), "%s.do-pid-calcs", prefix);
+	return hal_export_funct(fn, pid_do_calcs, p, 1, 0, comp_id);
+}
+
+int rtapi_app_main(void)
+{
+	char prefix[HAL_NAME_LEN + 1];
+	struct pid_loop *all;
+	int n, i, err;
+
+	if (debug != 0 && debug != 1) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "pid: debug=%d, must be 0 or 1\n", debug);
+		return -EINVAL;
+	}
+	if (num_chan < 0 && (!names[0] || !names[0][0]))
+		num_chan = PID_DEFAULT;
+	n = instance_count("pid", "num_chan", num_chan, names, PID_MAX, PID_MAX);
+	if (n < 0)
+		return n;
+	comp_id = hal_init("pid");
+	if (comp_id < 0)
+		return comp_id;
+	all = hal_malloc(n * (long)sizeof(*all));
+	err = all ? 0 : -ENOMEM;
+	if (!all)
+		rtapi_print_msg(RTAPI_MSG_ERR, "pid: out of HAL memory for %d loops\n", n);
+	for (i = 0; !err && i < n; i++) {
+		instance_prefix(prefix, sizeof(prefix), "pid", names, i);
+		err = pid_export(&all[i], prefix);
+	}
+	if (err) {
+		hal_exit(comp_id);	/* removes every pin and function made so far */
+		return err;
+	}
+	hal_ready(comp_id);
+	return 0;
+}
+
+void rtapi_app_exit(void)
+{
+	hal_exit(comp_id);
+}

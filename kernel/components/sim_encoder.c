@@ -1,0 +1,132 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
+/* sim_encoder.c - simulated quadrature encoder, sim_encoder(9) and the Simulated
+ * Encoder section: loadrt sim_encoder [num_chan=num | names=name1[,name2...]].
+ * One channel by default, at most 8. Per channel PREFIX (sim-encoder.N, RULINGS.md,
+ * or the name): pins phase-A phase-B phase-Z (bit out), speed (float in); params
+ * ppr (u32, default 100), scale (float, default 1.0). Functions (every channel at
+ * once) sim-encoder.make-pulses (no FP) and sim-encoder.update-speed (FP).
+ * The pulse generation is sim_encoder_core.h. */
+#include "rtapi.h"
+#include "rtapi_app.h"
+#include "hal.h"
+#include "instance_names.h"
+#include "sim_encoder_core.h"
+
+MODULE_LICENSE("GPL");
+MODULE_DESCRIPTION("simulated quadrature encoder");
+
+#define SIM_ENCODER_MAX 8
+#define FLOAT_ONE_BITS 0x3ff0000000000000ULL	/* 1.0, stored without FP at init */
+
+static int num_chan = -1;	/* -1: not given (one channel, unless names= is) */
+RTAPI_MP_INT(num_chan, "number of simulated encoders, 1..8");
+static char *names[SIM_ENCODER_MAX];
+RTAPI_MP_ARRAY_STRING(names, SIM_ENCODER_MAX, "names of the simulated encoders (instead of num_chan)");
+
+struct sim_encoder_chan {	/* in hal_malloc() memory */
+	hal_bit_t *phase_a, *phase_b, *phase_z;	/* out, written by make-pulses */
+	hal_float_t *speed;	/* in, read by update-speed */
+	hal_u32_t ppr;		/* param rw, read by update-speed */
+	hal_float_t scale;	/* param rw, read by update-speed */
+	struct sim_enc_shared shared;	/* update-speed <-> make-pulses */
+	struct sim_enc_state st;	/* private to make-pulses */
+};
+
+struct sim_encoder_set {	/* in hal_malloc() memory: the functions' argument */
+	int num;
+	struct sim_encoder_chan chan[];
+};
+
+static int comp_id;
+
+static void sim_encoder_make_pulses(void *arg, long period_ns)
+{
+	struct sim_encoder_set *set = arg;
+	struct sim_enc_out o;
+	int i;
+
+	for (i = 0; i < set->num; i++) {
+		struct sim_encoder_chan *c = &set->chan[i];
+
+		sim_enc_make_pulses(&c->st, &c->shared, period_ns, &o);
+		*c->phase_a = o.a;
+		*c->phase_b = o.b;
+		*c->phase_z = o.z;
+	}
+}
+
+static void sim_encoder_update_speed(void *arg, long period_ns)
+{
+	struct sim_encoder_set *set = arg;
+	int i;
+
+	for (i = 0; i < set->num; i++) {
+		struct sim_encoder_chan *c = &set->chan[i];
+
+		sim_enc_update_speed(&c->shared, *c->speed, c->scale, c->ppr, period_ns);
+	}
+}
+
+static int sim_encoder_export(struct sim_encoder_chan *c, const char *prefix)
+{
+	int err;
+
+	err = hal_pin_bit_newf(HAL_OUT, &c->phase_a, comp_id, "%s.phase-A", prefix);
+	if (!err)
+		err = hal_pin_bit_newf(HAL_OUT, &c->phase_b, comp_id, "%s.phase-B", prefix);
+	if (!err)
+		err = hal_pin_bit_newf(HAL_OUT, &c->phase_z, comp_id, "%s.phase-Z", prefix);
+	if (!err)
+		err = hal_pin_float_newf(HAL_IN, &c->speed, comp_id, "%s.speed", prefix);
+	if (!err)
+		err = hal_param_u32_newf(HAL_RW, &c->ppr, comp_id, "%s.ppr", prefix);
+	if (!err)
+		err = hal_param_float_newf(HAL_RW, &c->scale, comp_id, "%s.scale", prefix);
+	if (err)
+		return err;
+	c->ppr = 100;
+	*(volatile rtapi_u64 *)&c->scale = FLOAT_ONE_BITS;
+	return 0;
+}
+
+int rtapi_app_main(void)
+{
+	char prefix[HAL_NAME_LEN + 1];
+	struct sim_encoder_set *set;
+	int n, i, err;
+
+	n = instance_count("sim_encoder", "num_chan", num_chan, names, SIM_ENCODER_MAX,
+			   SIM_ENCODER_MAX);
+	if (n < 0)
+		return n;
+	comp_id = hal_init("sim_encoder");
+	if (comp_id < 0)
+		return comp_id;
+	set = hal_malloc((long)sizeof(*set) + n * (long)sizeof(set->chan[0]));
+	err = set ? 0 : -ENOMEM;
+	if (!set)
+		rtapi_print_msg(RTAPI_MSG_ERR, "sim_encoder: out of HAL memory for %d channels\n", n);
+	else
+		set->num = n;
+	for (i = 0; !err && i < n; i++) {
+		instance_prefix(prefix, sizeof(prefix), "sim-encoder", names, i);
+		err = sim_encoder_export(&set->chan[i], prefix);
+	}
+	if (!err)
+		err = hal_export_funct("sim-encoder.make-pulses", sim_encoder_make_pulses, set, 0, 0,
+				       comp_id);
+	if (!err)
+		err = hal_export_funct("sim-encoder.update-speed", sim_encoder_update_speed, set, 1,
+				       0, comp_id);
+	if (err) {
+		hal_exit(comp_id);	/* removes every pin, parameter and function made so far */
+		return err;
+	}
+	hal_ready(comp_id);
+	return 0;
+}
+
+void rtapi_app_exit(void)
+{
+	hal_exit(comp_id);
+}

@@ -1,0 +1,90 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
+/* supply.c - set output pins from parameters, supply(9) (obsolete: setp and sets
+ * do this now): loadrt supply [num_chan=N] (1..8, default 1). Channel N: params
+ * supply.N.d (bit) and supply.N.value (float; the page's "bit" is a misprint:
+ * it feeds the float outputs), pins supply.N.q, _q (bit out), supply.N.variable,
+ * _variable (float out), function supply.N.update (FP). */
+#include "rtapi.h"
+#include "rtapi_app.h"
+#include "hal.h"
+
+MODULE_LICENSE("GPL");
+MODULE_DESCRIPTION("set output pins from parameters (obsolete)");
+
+#define SUPPLY_MAX_CHAN 8
+
+static int num_chan = 1;
+RTAPI_MP_INT(num_chan, "number of supply channels, 1..8");
+
+struct supply {			/* in hal_malloc() memory */
+	hal_bit_t *q, *q_not;	/* written by update */
+	hal_float_t *variable, *variable_neg;	/* written by update */
+	hal_bit_t d;		/* RW param */
+	hal_float_t value;	/* RW param */
+};
+
+static int comp_id;
+
+static void supply_update(void *arg, long period_ns)
+{
+	struct supply *s = arg;
+
+	*s->q = s->d;
+	*s->q_not = !s->d;
+	*s->variable = s->value;
+	*s->variable_neg = 0.0 - s->value;	/* -1 times value, but 0 stays 0, not -0 */
+}
+
+static int export_supply(struct supply *s, int n)
+{
+	char fn[HAL_NAME_LEN + 1];
+	int err;
+
+	err = hal_pin_bit_newf(HAL_OUT, &s->q, comp_id, "supply.%d.q", n);
+	if (!err)
+		err = hal_pin_bit_newf(HAL_OUT, &s->q_not, comp_id, "supply.%d._q", n);
+	if (!err)
+		err = hal_pin_float_newf(HAL_OUT, &s->variable, comp_id, "supply.%d.variable", n);
+	if (!err)
+		err = hal_pin_float_newf(HAL_OUT, &s->variable_neg, comp_id, "supply.%d._variable", n);
+	if (!err)
+		err = hal_param_bit_newf(HAL_RW, &s->d, comp_id, "supply.%d.d", n);
+	if (!err)
+		err = hal_param_float_newf(HAL_RW, &s->value, comp_id, "supply.%d.value", n);
+	if (err)
+		return err;
+	rtapi_snprintf(fn, sizeof(fn), "supply.%d.update", n);
+	return hal_export_funct(fn, supply_update, s, 1, 0, comp_id);
+}
+
+int rtapi_app_main(void)
+{
+	struct supply *all;
+	int n, err;
+
+	if (num_chan < 1 || num_chan > SUPPLY_MAX_CHAN) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "supply: num_chan=%d is out of range, must be 1..%d\n",
+				num_chan, SUPPLY_MAX_CHAN);
+		return -EINVAL;
+	}
+	comp_id = hal_init("supply");
+	if (comp_id < 0)
+		return comp_id;
+	all = hal_malloc(num_chan * (long)sizeof(*all));
+	err = all ? 0 : -ENOMEM;
+	if (!all)
+		rtapi_print_msg(RTAPI_MSG_ERR, "supply: out of HAL memory for %d channels\n", num_chan);
+	for (n = 0; !err && n < num_chan; n++)
+		err = export_supply(&all[n], n);
+	if (err) {
+		hal_exit(comp_id);
+		return err;
+	}
+	hal_ready(comp_id);
+	return 0;
+}
+
+void rtapi_app_exit(void)
+{
+	hal_exit(comp_id);
+}

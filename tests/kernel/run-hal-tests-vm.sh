@@ -1,0 +1,63 @@
+#!/bin/sh
+# run-hal-tests-vm.sh TESTS_DIR - the HAL-level tests inside the kernel-test VM, in
+# the kernel flavor: tests/run-hal-tests.sh's rules (test.hal or test.sh, expected or
+# checkresult, expected-status, skip-flavor-kernel) in POSIX sh for busybox, one test
+# at a time (the kernel has one HAL). Prints "HALTEST PASS|FAIL|SKIP <dir>" per test,
+# "| " + the diff or reason under a failure, and a summary line; exit 1 on a failure.
+tests=${1:?usage: run-hal-tests-vm.sh TESTS_DIR}
+timeout_s=${HAL_TEST_TIMEOUT:-120}
+export HAL_FLAVOR=kernel HAL_TEST_FLAVOR=kernel
+work=$(mktemp -d)
+pass=0 fail=0 skip=0
+
+for t in $(find "$tests" \( -name test.hal -o -name test.sh \) -type f | sort); do
+	dir=${t%/*}
+	rel=${dir#"$tests"/}
+	if [ -e "$dir/skip-flavor-kernel" ]; then
+		echo "HALTEST SKIP $rel"; skip=$((skip + 1)); continue
+	fi
+	rm -rf "$work/tmp"; mkdir -p "$work/tmp"
+	(
+		cd "$dir" || exit 99
+		export TEST_TMPDIR="$work/tmp"
+		if [ -f test.hal ]; then
+			exec timeout "$timeout_s" halrun -f test.hal
+		else
+			exec timeout "$timeout_s" sh test.sh
+		fi
+	) </dev/null >"$work/result" 2>&1
+	rc=$?
+	# whatever the test left behind (failed teardown, timeout) must not leak
+	timeout 30 halrun -U >/dev/null 2>&1 </dev/null
+	if [ $rc -eq 124 ] || [ $rc -eq 143 ]; then
+		echo "timed out after ${timeout_s} s" >"$work/log"; ok=1
+	elif [ -x "$dir/checkresult" ]; then
+		(cd "$dir" && ./checkresult "$work/result") >"$work/log" 2>&1; ok=$?
+	elif [ -f "$dir/expected" ]; then
+		diff -u "$dir/expected" "$work/result" >"$work/log" 2>&1; ok=$?
+	else
+		echo "neither expected nor an executable checkresult" >"$work/log"; ok=1
+	fi
+	if [ $ok -eq 0 ] && [ -f "$dir/expected-status" ] && [ "$(cat "$dir/expected-status")" != "$rc" ]; then
+		echo "exit status $rc, expected $(cat "$dir/expected-status")" >"$work/log"; ok=1
+	fi
+	# nothing may stay loaded between tests: fail the test and clean up by hand
+	if [ -e /proc/rtapi ]; then
+		{ echo "left behind after halrun -U:"; lsmod; } >"$work/log"; ok=1
+		for m in $(lsmod | awk 'NR > 1 && $1 != "rtapi" && $1 != "hal_lib" { print $1 }'); do
+			rmmod "$m"
+		done
+		rmmod hal_lib 2>/dev/null; rmmod rtapi 2>/dev/null
+	fi
+	if [ $ok -eq 0 ]; then
+		echo "HALTEST PASS $rel"; pass=$((pass + 1))
+	else
+		echo "HALTEST FAIL $rel"; fail=$((fail + 1))
+		sed 's/^/| /' "$work/log" | head -n 40
+		echo "| --- output:"
+		sed 's/^/| /' "$work/result" | head -n 40
+	fi
+done
+rm -rf "$work"
+echo "HAL tests (kernel): $pass passed, $fail failed, $skip skipped"
+[ $fail -eq 0 ]

@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// realtime.cpp - see realtime.hpp: one switch per call between the two flavors.
+#include "realtime.hpp"
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+
+#include "hal/kmod.hpp"
+#include "rtapi_client.hpp"
+#include "snapshot.hpp"
+
+namespace hal::halcmd {
+
+Result<void> select_flavor(const std::string& forced)
+{
+    if (!forced.empty() && forced != "kernel" && forced != "sim")
+        return Error{-EINVAL, "--flavor=" + forced + ": must be kernel or sim"};
+    if (!forced.empty())
+        setenv("HAL_FLAVOR", forced.c_str(), 1);
+    auto choice = hal::kmod::detect_flavor();
+    if (!choice)
+        return choice.error();
+    setenv("HAL_FLAVOR", hal::kmod::flavor_name(choice->flavor), 1);
+    return ok();
+}
+
+bool kernel_flavor()
+{
+    const char* f = std::getenv("HAL_FLAVOR");
+    return f && (std::strcmp(f, "kernel") == 0 || std::strcmp(f, "kmod") == 0);
+}
+
+Result<void> rt_prepare()
+{
+    if (!kernel_flavor())
+        return ok();
+    return hal::kmod::load_core();
+}
+
+Result<void> rt_load(const std::string& module, const std::vector<std::string>& args)
+{
+    if (kernel_flavor())
+        return hal::kmod::load_module(module, args);
+    return hal::rtapi_load(module, args);
+}
+
+Result<void> rt_unload(const std::string& module)
+{
+    if (!kernel_flavor())
+        return hal::rtapi_unload(module);
+    if (auto r = hal::kmod::unload_module(module); !r || module != "all")
+        return r;
+    // Threads outlive their module until the host goes (threads(9)); rtapi_app
+    // deletes them on "unload all", hal_lib.ko when it is unloaded.
+    if (!take_snapshot().threads.empty())
+        return hal::kmod::reload_hal_lib();
+    return ok();
+}
+
+bool rt_running()
+{
+    if (kernel_flavor())
+        return !hal::kmod::hal_modules().empty();
+    return hal::rtapi_running();
+}
+
+Result<void> rt_shutdown()
+{
+    if (kernel_flavor())
+        return hal::kmod::shutdown();
+    return hal::rtapi_shutdown();
+}
+
+}  // namespace hal::halcmd
