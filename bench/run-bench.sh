@@ -33,6 +33,8 @@ done
 if [ -n "${secs[1000]:-}" ] && [ -n "${secs[16000]:-}" ]; then
 	exp=$(calc "log(${secs[16000]} / ${secs[1000]}) / log(16)")
 	printf "growth exponent (1000 -> 16000): %.2f  (1 = linear, 2 = quadratic)\n" "$exp"
+	exp=$(calc "log(${secs[16000]} / ${secs[4000]}) / log(4)")
+	printf "growth exponent (4000 -> 16000): %.2f  (includes the fixed start-up of rtapi_app)\n" "$exp"
 fi
 
 echo "== (b) per-function cost: 'funct' workload, N=1000, 1 ms thread"

@@ -9,15 +9,26 @@ src=$1 build=$2 manifest=${3:-$1/modules.manifest}
 awk '!/^[ \t]*(#|$)/ { print }' "$manifest" | while read -r name fp sources; do
 	case $name in *[!a-z0-9_]*|'') echo "modules.manifest: bad module name '$name'" >&2; exit 1;; esac
 	case $fp in fp|nofp) ;; *) echo "modules.manifest: $name: '$fp' is not fp or nofp" >&2; exit 1;; esac
-	objs=
+	objs= csources=
 	for s in $sources; do
 		mkdir -p "$build/$(dirname "$s")"
-		ln -sfn "$src/kernel/components/$s" "$build/$s"
+		case $s in
+		*.comp)	# comp(1) output of the CMake build: build/gen/NAME.c (or $COMP_GEN_DIR)
+			gen=${COMP_GEN_DIR:-$src/build/gen}/$(basename "${s%.comp}").c
+			if [ ! -f "$gen" ]; then
+				echo "modules.manifest: $name: $gen not found: run the CMake build first (it runs comp on $s)" >&2
+				exit 1
+			fi
+			s=${s%.comp}.c
+			ln -sfn "$gen" "$build/$s";;
+		*)	ln -sfn "$src/kernel/components/$s" "$build/$s";;
+		esac
 		objs="$objs ${s%.c}.o"
+		csources="${csources:+$csources }$s"
 	done
 	echo "obj-m += $name.o"
-	if [ "$sources" != "$name.c" ]; then
-		case " $sources " in *" $name.c "*)
+	if [ "$csources" != "$name.c" ]; then
+		case " $csources " in *" $name.c "*)
 			echo "modules.manifest: $name: a multi-file module may not have a source $name.c" >&2
 			exit 1;;
 		esac

@@ -3,11 +3,13 @@
  * modules without being root. Installed setuid root, so it trusts nothing from its
  * caller: only whitelisted module names, only from the compiled-in directory
  * (<EMC_MODULE_DIR>/<kernel release>/NAME.ko), only "param[=value]" arguments of
- * printable characters, and insmod/rmmod by absolute path with an empty environment
- * and no capability but CAP_SYS_MODULE.
- *   emc_module_helper insert NAME [PARAM[=VALUE]...]
+ * printable characters, and no capability but CAP_SYS_MODULE. It calls
+ * finit_module(2)/delete_module(2) itself rather than running insmod: nothing else
+ * is executed, and some insmod (busybox) retries a failed finit_module with
+ * init_module, which runs a failing rtapi_app_main twice.
+ *   emc_module_helper insert NAME [PARAM[=VALUE]...]   (joined with blanks, as insmod)
  *   emc_module_helper remove NAME
- * Exit status: 0 done, 1 insmod/rmmod failed (its message is on stderr), 2 refused. */
+ * Exit status: 0 done, 1 the kernel refused ("... : <strerror>" on stderr), 2 refused. */
 #define _GNU_SOURCE
 #include <errno.h>
 #include <grp.h>
@@ -15,21 +17,18 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <fcntl.h>
 #include <sys/prctl.h>
+#include <sys/syscall.h>
 #include <sys/utsname.h>
-#include <sys/wait.h>
 #include <unistd.h>
 #include "emc_module_whitelist.h"	/* EMC_MODULE_WHITELIST: "name", ... (generated) */
 
 #ifndef EMC_MODULE_DIR
 #error "EMC_MODULE_DIR (module base directory) must be compiled in"
 #endif
-#ifndef EMC_INSMOD
-#define EMC_INSMOD "/sbin/insmod"
-#endif
-#ifndef EMC_RMMOD
-#define EMC_RMMOD "/sbin/rmmod"
-#endif
+/* EMC_FAKE_CALLS (the unit tests' build only): instead of the two system calls,
+ * append them to this file; they fail with EINVAL while "<file>.fail" exists. */
 
 #define MAX_NAME 31	/* RTAPI_NAME_LEN */
 #define MAX_ARG 1024
@@ -88,8 +87,8 @@ static const char *arg_problem(const char *arg)
 
 /* Become root for real (a setuid binary has only the effective uid), keep no
  * supplementary groups, and drop every capability but CAP_SYS_MODULE from the
- * bounding set so insmod/rmmod get nothing else. Without privileges (a test build
- * run by a user) this is skipped and insmod reports the permission error itself. */
+ * bounding set, so a bug here can do nothing else. Without privileges (a test build
+ * run by a user) this is skipped and the kernel reports the permission error. */
 static int drop_privileges(void)
 {
 	int cap;
@@ -108,35 +107,61 @@ static int drop_privileges(void)
 	return 0;
 }
 
-static int run(char **argv)
+#ifdef EMC_FAKE_CALLS
+static int fake_call(const char *what, const char *arg1, const char *arg2)
 {
-	char *const envp[] = { NULL };
-	int status;
-	pid_t pid;
+	FILE *f = fopen(EMC_FAKE_CALLS, "a");
 
-	fflush(NULL);
-	pid = fork();
-	if (pid < 0) {
-		perror("emc_module_helper: fork");
+	if (f) {
+		fprintf(f, "%s %s%s%s\n", what, arg1, arg2 ? " " : "", arg2 ? arg2 : "");
+		fclose(f);
+	}
+	if (access(EMC_FAKE_CALLS ".fail", F_OK) == 0) {
+		errno = EINVAL;
+		return -1;
+	}
+	return 0;
+}
+#endif
+
+static int insert(const char *name, const char *path, const char *params)
+{
+	int fd = open(path, O_RDONLY | O_CLOEXEC), rc;
+
+	if (fd < 0) {
+		fprintf(stderr, "emc_module_helper: cannot open %s: %s\n", path, strerror(errno));
 		return 1;
 	}
-	if (pid == 0) {
-		execve(argv[0], argv, envp);
-		fprintf(stderr, "emc_module_helper: cannot run %s: %s\n", argv[0], strerror(errno));
-		_exit(127);
+#ifdef EMC_FAKE_CALLS
+	rc = fake_call("finit_module", path, params);
+#else
+	rc = (int)syscall(SYS_finit_module, fd, params, 0);
+#endif
+	if (rc != 0) {
+		int err = errno;
+
+		close(fd);
+		fprintf(stderr, "emc_module_helper: cannot insert %s: %s\n", name, strerror(err));
+		return 1;
 	}
-	while (waitpid(pid, &status, 0) < 0)
-		if (errno != EINTR) {
-			perror("emc_module_helper: waitpid");
-			return 1;
-		}
-	if (WIFEXITED(status) && WEXITSTATUS(status) == 0)
-		return 0;
-	fprintf(stderr, "emc_module_helper: %s %s failed (%s %d)\n",
-		strrchr(argv[0], '/') ? strrchr(argv[0], '/') + 1 : argv[0], argv[1],
-		WIFEXITED(status) ? "exit status" : "signal",
-		WIFEXITED(status) ? WEXITSTATUS(status) : WTERMSIG(status));
-	return 1;
+	close(fd);
+	return 0;
+}
+
+static int remove_module(const char *name)
+{
+	int rc;
+
+#ifdef EMC_FAKE_CALLS
+	rc = fake_call("delete_module", name, NULL);
+#else
+	rc = (int)syscall(SYS_delete_module, name, O_NONBLOCK);	/* never wait for users */
+#endif
+	if (rc != 0) {
+		fprintf(stderr, "emc_module_helper: cannot remove %s: %s\n", name, strerror(errno));
+		return 1;
+	}
+	return 0;
 }
 
 static int usage(void)
@@ -149,17 +174,18 @@ static int usage(void)
 int main(int argc, char **argv)
 {
 	static char path[4096];
-	char *child[MAX_ARGS + 3];
+	static char params[MAX_ARGS * (MAX_ARG + 1) + 1];
 	struct utsname u;
 	const char *name;
-	int i, insert;
+	size_t len = 0;
+	int i, insert_verb;
 
 	if (argc < 3)
 		return usage();
 	if (strcmp(argv[1], "insert") == 0)
-		insert = 1;
+		insert_verb = 1;
 	else if (strcmp(argv[1], "remove") == 0)
-		insert = 0;
+		insert_verb = 0;
 	else
 		return usage();
 	name = argv[2];
@@ -167,7 +193,7 @@ int main(int argc, char **argv)
 		return refuse("module name", "must be 1 to 31 characters of a-z 0-9 _");
 	if (!whitelisted(name))
 		return refuse(name, "not a HAL realtime module");
-	if (!insert && argc > 3)
+	if (!insert_verb && argc > 3)
 		return refuse(name, "remove takes no arguments");
 	if (argc - 3 > MAX_ARGS)
 		return refuse(name, "more than 64 arguments");
@@ -179,23 +205,24 @@ int main(int argc, char **argv)
 	}
 	if (drop_privileges())
 		return 2;
-	if (insert) {
-		if (uname(&u))
-			return refuse(name, "cannot read the kernel release");
-		if (snprintf(path, sizeof(path), "%s/%s/%s.ko", EMC_MODULE_DIR, u.release, name) >=
-		    (int)sizeof(path))
-			return refuse(name, "module path too long");
-		if (access(path, R_OK))
-			return refuse(path, "no such module for this kernel (is the kernel flavor installed?)");
-		child[0] = (char *)EMC_INSMOD;
-		child[1] = path;
-		for (i = 3; i < argc; i++)
-			child[i - 1] = argv[i];
-		child[argc - 1] = NULL;
-	} else {
-		child[0] = (char *)EMC_RMMOD;
-		child[1] = (char *)name;
-		child[2] = NULL;
+	if (!insert_verb)
+		return remove_module(name);
+	if (uname(&u))
+		return refuse(name, "cannot read the kernel release");
+	if (snprintf(path, sizeof(path), "%s/%s/%s.ko", EMC_MODULE_DIR, u.release, name) >=
+	    (int)sizeof(path))
+		return refuse(name, "module path too long");
+	if (access(path, R_OK))
+		return refuse(path, "no such module for this kernel (is the kernel flavor installed?)");
+	/* as insmod does: the arguments joined by blanks (bounded by the checks above) */
+	for (i = 3; i < argc; i++) {
+		size_t n = strlen(argv[i]);
+
+		memcpy(params + len, argv[i], n);
+		len += n;
+		if (i + 1 < argc)
+			params[len++] = ' ';
 	}
-	return run(child);
+	params[len] = '\0';
+	return insert(name, path, params);
 }

@@ -1,8 +1,8 @@
-# emc_module_helper_executable(TARGET MODULE_DIR INSMOD RMMOD): the helper with its
-# whitelist (modules.manifest + rtapi + hal_lib) and paths compiled in. Used by this
-# directory's CMakeLists.txt (the installed helper) and by the unit tests (a copy that
-# runs fake insmod/rmmod scripts).
-function(emc_module_helper_executable target module_dir insmod rmmod)
+# emc_module_helper_executable(TARGET MODULE_DIR [FAKE_CALLS_FILE]): the helper with
+# its whitelist (modules.manifest + rtapi + hal_lib) and module directory compiled in.
+# Used by this directory's CMakeLists.txt (the installed helper) and by the unit tests
+# (a copy that logs its system calls to FAKE_CALLS_FILE instead of making them).
+function(emc_module_helper_executable target module_dir)
   file(STRINGS ${CMAKE_SOURCE_DIR}/modules.manifest lines REGEX "^[a-z]")
   set(names "\"rtapi\", \"hal_lib\"")
   foreach(line IN LISTS lines)
@@ -14,7 +14,9 @@ function(emc_module_helper_executable target module_dir insmod rmmod)
        CONTENT "/* generated from modules.manifest */\n#define EMC_MODULE_WHITELIST ${names}\n")
   add_executable(${target} ${CMAKE_SOURCE_DIR}/helpers/emc_module_helper/emc_module_helper.c)
   target_include_directories(${target} PRIVATE ${gen})
-  target_compile_definitions(${target} PRIVATE EMC_MODULE_DIR="${module_dir}"
-                             EMC_INSMOD="${insmod}" EMC_RMMOD="${rmmod}")
+  target_compile_definitions(${target} PRIVATE EMC_MODULE_DIR="${module_dir}")
+  if(ARGC GREATER 2)
+    target_compile_definitions(${target} PRIVATE EMC_FAKE_CALLS="${ARGV2}")
+  endif()
   target_compile_options(${target} PRIVATE -Wall -Wextra)
 endfunction()

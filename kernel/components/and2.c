@@ -10,7 +10,7 @@ MODULE_LICENSE("GPL");
 MODULE_DESCRIPTION("two-input AND gate");
 
 static int count = -1;		/* -1: not given (one instance, unless names= is) */
-RTAPI_MP_INT(count, "number of and2 gates, 1..64");
+RTAPI_MP_INT(count, "number of and2 gates");
 static char *names[LOGIC_GATE_MAX];
 RTAPI_MP_ARRAY_STRING(names, LOGIC_GATE_MAX, "names of the and2 gates (instead of count)");
 

@@ -134,9 +134,7 @@ static void comp_delete_locked(struct hal_comp_rec *comp)
 	struct hal_obj_hdr *o, *next;
 	struct hal_block_hdr *blk;
 
-	for (o = hal_first(HAL_KIND_FUNCT); o; o = hal_next(o))
-		if (o->owner_off == comp_off)
-			hal_funct_remove_from_threads((struct hal_funct_rec *)o);
+	hal_comp_functs_remove_from_threads(comp_off);
 	hal_threads_quiesce();	/* no thread may still be inside this component's code */
 	for (o = hal_first(HAL_KIND_FUNCT); o; o = next) {
 		next = hal_next(o);

@@ -98,19 +98,26 @@ void hal_funct_delete_locked(struct hal_funct_rec *f)
 	hal_object_delete(&f->hdr);
 }
 
-/* Unlink every entry of 'f' from 'link's list; the caller quiesces before reuse. */
-static void remove_entries(rtapi_u32 *link, struct hal_funct_rec *f)
+/* Unlink from thread 't' every entry whose function is 'f' or, with f NULL, is
+ * owned by component 'owner_off'. One pass; count and tail are rebuilt on the way.
+ * The caller quiesces before the freed entries can be reused. */
+static void remove_entries(struct hal_thread_rec *t, struct hal_funct_rec *f, rtapi_u32 owner_off)
 {
-	rtapi_u32 f_off = hal_off(f);
+	rtapi_u32 *link = &t->first_entry_off;
 
+	t->entry_count = 0;
+	t->last_entry_off = 0;
 	while (*link) {
 		struct hal_entry_rec *e = hal_ptr(*link);
+		struct hal_funct_rec *ef = hal_ptr(e->funct_off);
 
-		if (e->funct_off == f_off) {
+		if (f ? ef == f : ef->hdr.owner_off == owner_off) {
 			__atomic_store_n(link, e->next_off, __ATOMIC_RELEASE);
 			hal_free_block(hal_seg, e);
-			f->users--;
+			ef->users--;
 		} else {
+			t->entry_count++;
+			t->last_entry_off = *link;
 			link = &e->next_off;
 		}
 	}
@@ -121,7 +128,15 @@ void hal_funct_remove_from_threads(struct hal_funct_rec *f)
 	struct hal_obj_hdr *o;
 
 	for (o = hal_first(HAL_KIND_THREAD); o && f->users > 0; o = hal_next(o))
-		remove_entries(&((struct hal_thread_rec *)o)->first_entry_off, f);
+		remove_entries((struct hal_thread_rec *)o, f, 0);
+}
+
+void hal_comp_functs_remove_from_threads(rtapi_u32 comp_off)
+{
+	struct hal_obj_hdr *o;
+
+	for (o = hal_first(HAL_KIND_THREAD); o; o = hal_next(o))
+		remove_entries((struct hal_thread_rec *)o, 0, comp_off);
 }
 
 static int add_locked(const char *funct_name, const char *thread_name, int position)
@@ -156,8 +171,7 @@ static int add_locked(const char *funct_name, const char *thread_name, int posit
 				funct_name, thread_name);
 		return -EINVAL;
 	}
-	for (link = &t->first_entry_off; *link; link = &((struct hal_entry_rec *)hal_ptr(*link))->next_off)
-		n++;
+	n = (int)t->entry_count;
 	/* position: +1 first, +k k-th; -1 last, -k k-th from the end; 0 illegal */
 	index = position > 0 ? position - 1 : n + 1 + position;
 	if (position == 0 || index < 0 || index > n) {
@@ -172,11 +186,18 @@ static int add_locked(const char *funct_name, const char *thread_name, int posit
 				funct_name, thread_name);
 		return -ENOMEM;
 	}
-	for (link = &t->first_entry_off; index > 0; index--)
-		link = &((struct hal_entry_rec *)hal_ptr(*link))->next_off;
+	if (index == n && n > 0) {	/* appending, as addf does: O(1) */
+		link = &((struct hal_entry_rec *)hal_ptr(t->last_entry_off))->next_off;
+	} else {
+		for (link = &t->first_entry_off; index > 0; index--)
+			link = &((struct hal_entry_rec *)hal_ptr(*link))->next_off;
+	}
 	e->funct_off = hal_off(f);
 	e->next_off = *link;
 	__atomic_store_n(link, hal_off(e), __ATOMIC_RELEASE);	/* publish last */
+	if (e->next_off == 0)
+		t->last_entry_off = hal_off(e);
+	t->entry_count++;
 	f->users++;
 	return 0;
 }
@@ -197,7 +218,7 @@ static int del_locked(const char *funct_name, const char *thread_name)
 {
 	struct hal_funct_rec *f;
 	struct hal_thread_rec *t;
-	rtapi_u32 *link;
+	rtapi_u32 *link, prev = 0;
 	int err;
 
 	err = hal_check_lock(HAL_LOCK_CONFIG, "remove functions from threads");
@@ -218,11 +239,15 @@ static int del_locked(const char *funct_name, const char *thread_name)
 
 		if (e->funct_off == hal_off(f)) {
 			__atomic_store_n(link, e->next_off, __ATOMIC_RELEASE);
+			if (t->last_entry_off == hal_off(e))
+				t->last_entry_off = prev;
+			t->entry_count--;
 			hal_threads_quiesce();
 			hal_free_block(hal_seg, e);
 			f->users--;
 			return 0;
 		}
+		prev = *link;
 	}
 	rtapi_print_msg(RTAPI_MSG_ERR, "function '%s' is not on thread '%s'\n", funct_name, thread_name);
 	return -ENOENT;

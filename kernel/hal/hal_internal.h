@@ -103,6 +103,8 @@ void hal_funct_delete_locked(struct hal_funct_rec *f);
 void hal_thread_delete_locked(struct hal_thread_rec *t);
 /* Remove every entry of 'f' from every thread. */
 void hal_funct_remove_from_threads(struct hal_funct_rec *f);
+/* Remove every entry of every function component 'comp_off' owns: one pass per thread. */
+void hal_comp_functs_remove_from_threads(rtapi_u32 comp_off);
 /* Wait (bounded) until no thread is in the middle of running its functions. */
 void hal_threads_quiesce(void);
 

@@ -10,8 +10,6 @@
 #include <linux/module.h>
 #include <linux/moduleparam.h>
 #include <linux/init.h>
-#include <linux/slab.h>
-#include <linux/string.h>
 
 /* Permission 0444: values readable under /sys/module/NAME/parameters, never changed
  * behind the component's back after init. */
@@ -38,17 +36,19 @@
 void hal_set_load_context(const char *module, const char *args);
 int hal_exit_module_comps(const char *module);
 
+/* The loadrt arguments as halcmd joined them, for "show comp" and "save": the
+ * kernel's parser cuts THIS_MODULE->args apart in place, so halcmd (hal::kmod) passes
+ * them once more in this parameter. Empty when loaded by hand with insmod. */
+static char *hal_loadrt_args;
+module_param(hal_loadrt_args, charp, 0);
+
 static int __init rtapi_kmod_app_init(void)
 {
-	/* insmod leaves a blank after the last argument: "show comp" and "save" get
-	 * the arguments as halcmd's loadrt line had them. */
-	char *args = kstrdup(THIS_MODULE->args ? THIS_MODULE->args : "", GFP_KERNEL);
 	int rc;
 
-	hal_set_load_context(KBUILD_MODNAME, args ? strim(args) : THIS_MODULE->args);
+	hal_set_load_context(KBUILD_MODNAME, hal_loadrt_args ? hal_loadrt_args : "");
 	rc = rtapi_app_main();
 	hal_set_load_context(NULL, NULL);
-	kfree(args);
 	if (rc) {
 		/* halcmd finds this line in /proc/rtapi/messages and words it as the
 		 * simulated flavor does (hal::kmod, kmod.cpp): keep the two in step. */

@@ -59,9 +59,9 @@ static int map_segment(struct kmap *m, int key, unsigned long size)
 	fd = open("/dev/" RTAPI_DEVICE_NAME, O_RDWR | O_CLOEXEC);
 	if (fd < 0) {
 		err = errno;
-		rtapi_print_msg(RTAPI_MSG_ERR, "rtapi: cannot open /dev/%s: %s%s\n",
-				RTAPI_DEVICE_NAME, strerror(err),
-				err == ENOENT ? " (rtapi.ko is not loaded)" : "");
+		if (err != ENOENT)	/* no rtapi.ko: no segment either, said as such */
+			rtapi_print_msg(RTAPI_MSG_ERR, "rtapi: cannot open /dev/%s: %s\n",
+					RTAPI_DEVICE_NAME, strerror(err));
 		return -err;
 	}
 	if (ioctl(fd, RTAPI_IOC_SHMEM_LOOKUP, &q) < 0) {

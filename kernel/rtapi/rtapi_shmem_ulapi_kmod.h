@@ -12,8 +12,8 @@
 int rtapi_shmem_kmod_active(void);
 
 /* As rtapi_shmem_new/_delete/_getptr, module_id already checked. A process cannot
- * create a segment here: a key that rtapi.ko does not hold gives -ENOENT (no
- * message: the caller knows which module should have made it). */
+ * create a segment here: a key that rtapi.ko does not hold, or no rtapi.ko at all,
+ * gives -ENOENT (no message: the caller knows which module should have made it). */
 int rtapi_shmem_new_kmod(int key, int module_id, unsigned long size);
 int rtapi_shmem_delete_kmod(int shmem_id, int module_id);
 int rtapi_shmem_getptr_kmod(int shmem_id, void **ptr);

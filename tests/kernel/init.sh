@@ -4,8 +4,6 @@
 #   KTEST <case> PASS|FAIL
 # per case and "KTEST-DONE <passed> <failed>" last, which the host script parses.
 /bin/busybox --install -s /bin
-# emc_module_helper runs /sbin/insmod and /sbin/rmmod (compiled in)
-mkdir -p /sbin && ln -s /bin/busybox /sbin/insmod && ln -s /bin/busybox /sbin/rmmod
 mount -t proc proc /proc
 mount -t sysfs sysfs /sys
 mount -t devtmpfs devtmpfs /dev

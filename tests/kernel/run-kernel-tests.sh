@@ -25,7 +25,7 @@ mkdir -p "$out"
 echo "== building modules for $kver"
 # KTEST_MANIFEST: build and test only the modules listed there (default: all)
 make -s -f "$root/kernel/Makefile.kmod" KDIR="$kdir" KMOD_BUILD="$out/modules" \
-	${KTEST_MANIFEST:+KMOD_MANIFEST="$KTEST_MANIFEST"} ${KMOD_CFLAGS:+KCFLAGS="$KMOD_CFLAGS"} >"$out.build.log" 2>&1 ||
+	KMOD_TEST_MODULES="$here/fmt_selftest.c" ${KTEST_MANIFEST:+KMOD_MANIFEST="$KTEST_MANIFEST"} ${KMOD_CFLAGS:+KCFLAGS="$KMOD_CFLAGS"} >"$out.build.log" 2>&1 ||
 	{ mkdir -p "$out"; cat "$out.build.log" >&2; exit 1; }
 
 # Static tools: the VM has no libc. Same sources as build/, linked -static, with the

@@ -219,13 +219,27 @@ Result<fs::path> compile_sim(const Source& s, const std::string& file, const Pat
 Result<fs::path> compile_kernel(const Source& s, const std::string& file, const Paths& p,
                                 const fs::path& dir, const fs::path& out)
 {
-    std::string kver = kernel_release();
-    std::string kdir = env_or("KDIR", "/lib/modules/" + kver + "/build");
+    // KDIR as kernel/Makefile.kmod chooses it: the running kernel's build directory,
+    // else the (non-rt) Debian header package.
+    std::string kdir = env_or("KDIR", "/lib/modules/" + kernel_release() + "/build");
+    if (!std::getenv("KDIR") && !fs::exists(fs::path(kdir) / "Makefile")) {
+        std::error_code ec;
+        for (const auto& e : fs::directory_iterator("/usr/src", ec)) {
+            std::string n = e.path().filename().string();
+            if (n.starts_with("linux-headers-") && ends_with(n, "-amd64") && !ends_with(n, "-rt-amd64"))
+                kdir = e.path().string();
+        }
+    }
+    auto release = read_file(kdir + "/include/config/kernel.release");
+    if (!release)
+        return Error{-ENOENT, file + ": no kernel headers in " + kdir + " (set KDIR)"};
+    std::string kver = release->substr(0, release->find_first_of("\n"));
     std::string kmod_build = env_or("HAL_KMOD_BUILD", std::string(COMP_KMOD_BUILD_DIR) + "/" + kver);
     fs::path symvers = fs::path(kmod_build) / "Module.symvers";
     if (!fs::exists(symvers))
         return Error{-ENOENT, file + ": " + symvers.string() +
                                   " not found: build the kernel modules first (make kmod) or set HAL_KMOD_BUILD"};
+    fs::create_directories(dir);
     if (s.c_file.parent_path() != dir)
         fs::copy_file(s.c_file, dir / (s.module + ".c"), fs::copy_options::overwrite_existing);
     std::ostringstream kb;

@@ -7,7 +7,9 @@
 //   rtapi_app_main/rtapi_app_exit (or main() for userspace).
 #include "gen_c.hpp"
 
+#include <algorithm>
 #include <cstdlib>
+#include <filesystem>
 #include <cstring>
 #include <sstream>
 
@@ -254,7 +256,12 @@ private:
 
     void undef_macros()
     {
-        o_ << "\n/* ---- generated glue; the user's macros end here ---- */\n";
+        // Back to the generated file's own numbering, so errors in the glue point at it.
+        std::string sofar = o_.str();
+        long line = 2 + static_cast<long>(std::count(sofar.begin(), sofar.end(), '\n'));
+        o_ << "#line " << line << " " << c_quote(std::filesystem::path(c_.file).stem().string() + ".c")
+           << "\n";
+        o_ << "/* ---- generated glue; the user's macros end here ---- */\n";
         for (const auto& m : defined_)
             o_ << "#undef " << m << "\n";
         o_ << "\n";

@@ -23,6 +23,8 @@ namespace fs = std::filesystem;
 namespace {
 
 const char* const messages_file = "/proc/rtapi/messages";
+// The hidden parameter that carries the joined arguments (rtapi_app_kmod.h).
+const char* const args_param = "hal_loadrt_args";
 
 struct ProcModule {
     std::string name;
@@ -206,14 +208,25 @@ Result<void> load_module(const std::string& name, const std::vector<std::string>
     auto declared = declared_params(ko);
     if (!declared)
         return declared.error();
+    std::erase(*declared, std::string(args_param));   // ours, not the user's
     if (auto r = check_module_args(name, *args, *declared); !r)
         return r;
+    auto joined = join_module_args(name, *args);
+    if (!joined)
+        return joined.error();
     if (auto r = load_core(); !r)
         return r;
     std::vector<std::string> argv{"insert", name};
     for (const ModuleArg& a : *args)   // the kernel's parser takes "name=\"a b\""
         argv.push_back(a.name + "=" +
                        (a.value.find(' ') != std::string::npos ? "\"" + a.value + "\"" : a.value));
+    // The kernel's quoting has no escapes and knows only double quotes, so the
+    // joined form's own quotes become single ones (which loadrt reads alike);
+    // arguments holding both kinds are not recorded (show comp and save lack them).
+    if (joined->find('\'') == std::string::npos)
+        std::replace(joined->begin(), joined->end(), '"', '\'');
+    if (!joined->empty() && joined->find('"') == std::string::npos)
+        argv.push_back(std::string(args_param) + "=\"" + *joined + "\"");
     unsigned long long seq = next_message_seq();
     HelperRun r = run_helper(argv);
     if (r.status != 0)

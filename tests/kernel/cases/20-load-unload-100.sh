@@ -18,7 +18,7 @@ args_of() {
 comps=
 for ko in "$M"/*.ko; do
 	name=${ko##*/}; name=${name%.ko}
-	case $name in rtapi|hal_lib) ;; *) comps="$comps $name" ;; esac
+	case $name in rtapi|hal_lib|fmt_selftest) ;; *) comps="$comps $name" ;; esac
 done
 echo "modules:$comps"
 i=0

@@ -196,7 +196,8 @@ TEST_F(KmodModules, LoadPassesArgumentsQuotingBlanks)
         GTEST_SKIP() << "rtapi.ko is loaded on this machine";
     auto r = hal::kmod::load_module("and2", {"names=a b", "count=2"});
     ASSERT_TRUE(r) << r.error().message;
-    EXPECT_EQ(read_log(), "insert rtapi\ninsert hal_lib\ninsert and2 names=\"a b\" count=2\n");
+    EXPECT_EQ(read_log(), "insert rtapi\ninsert hal_lib\ninsert and2 names=\"a b\" count=2 "
+                          "hal_loadrt_args=\"names='a b' count=2\"\n");
 }
 
 TEST_F(KmodModules, FailedInsertWithoutRingCarriesTheHelperMessage)
