@@ -62,3 +62,6 @@ if halcmd -f "$tmp/sample.hal" > "$tmp/sample.out" 2>&1; then
 else
 	echo "setup failed:"; tail -3 "$tmp/sample.out"
 fi
+
+echo "== stepgen: maximum step rates and make-pulses cost"
+"$build/bin/stepgen_bench"
