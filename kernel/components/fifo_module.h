@@ -153,4 +153,60 @@ static inline int fifo_pins_export(union fifo_pin_ptr *pins, int comp_id, const 
 	return err;
 }
 
+/* What a FIFO module (sampler, streamer) holds from init to exit. */
+struct fifo_module {
+	const char *name;	/* "sampler" / "streamer": component, rtapi module, messages */
+	int module_id;		/* the rtapi module that owns the shared memory */
+	int comp_id;
+	struct fifo_shm shm[HAL_FIFO_MAX_FIFOS];
+};
+
+/* Undo fifo_module_load(), also half-way: HAL first, so no thread still runs
+ * the FIFO function when its shared memory goes. */
+static inline void fifo_module_remove(struct fifo_module *m)
+{
+	int n;
+
+	hal_exit(m->comp_id);
+	for (n = 0; n < HAL_FIFO_MAX_FIFOS; n++)
+		fifo_shm_destroy(&m->shm[n], m->module_id);
+	rtapi_exit(m->module_id);
+}
+
+/* rtapi_app_main() of a FIFO module: check cfg=/depth=, register with RTAPI and
+ * HAL, give every FIFO 'size' bytes of HAL memory and let export(m, mem, n) make
+ * its shared memory, pins and function. 0, or -errno with nothing left behind. */
+static inline int fifo_module_load(struct fifo_module *m, char *const *cfg, const int *depth,
+				   long size, int (*export)(struct fifo_module *m, void *mem, int n))
+{
+	char *all;
+	int num, n, err;
+
+	num = fifo_module_count(m->name, cfg, depth);
+	if (num < 0)
+		return num;
+	m->module_id = rtapi_init(m->name);
+	if (m->module_id < 0) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "%s: rtapi_init failed (%d)\n", m->name, m->module_id);
+		return m->module_id;
+	}
+	m->comp_id = hal_init(m->name);
+	if (m->comp_id < 0) {
+		rtapi_exit(m->module_id);
+		return m->comp_id;
+	}
+	all = hal_malloc(num * size);
+	err = all ? 0 : -ENOMEM;
+	if (!all)
+		rtapi_print_msg(RTAPI_MSG_ERR, "%s: out of HAL memory for %d FIFOs\n", m->name, num);
+	for (n = 0; !err && n < num; n++)
+		err = export(m, all + n * size, n);
+	if (err) {
+		fifo_module_remove(m);
+		return err;
+	}
+	hal_ready(m->comp_id);
+	return 0;
+}
+
 #endif /* FIFO_MODULE_H */

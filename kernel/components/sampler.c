@@ -33,9 +33,7 @@ struct sampler {		/* in hal_malloc() memory, one per FIFO */
 	union fifo_pin_ptr pins[HAL_FIFO_MAX_PINS];
 };
 
-static int module_id;
-static int comp_id;
-static struct fifo_shm shm[HAL_FIFO_MAX_FIFOS];	/* init/exit only: what to delete */
+static struct fifo_module mod = { .name = "sampler" };	/* init/exit only */
 
 static rtapi_s32 next_s32(rtapi_s32 v)
 {
@@ -86,80 +84,44 @@ static void sample(void *arg, long period_ns)
 	*s->full = used >= s->hdr->depth;
 }
 
-static int sampler_export(struct sampler *s, int n)
+static int sampler_export(struct fifo_module *fm, void *mem, int n)
 {
+	struct sampler *s = mem;
 	char fn[HAL_NAME_LEN + 1];
 	int m, err;
 
-	err = fifo_shm_create(&shm[n], "sampler", module_id, SAMPLER_SHMEM_KEY, n, cfg[n], depth[n]);
+	err = fifo_shm_create(&fm->shm[n], "sampler", fm->module_id, SAMPLER_SHMEM_KEY, n, cfg[n], depth[n]);
 	if (err)
 		return err;
-	s->hdr = shm[n].hdr;
-	s->data = shm[n].data;
+	s->hdr = fm->shm[n].hdr;
+	s->data = fm->shm[n].data;
 	s->num_pins = hal_fifo_cfg_pins(cfg[n]);
 	for (m = 0; m < s->num_pins; m++)
 		s->type[m] = hal_fifo_type_of(cfg[n][m]);
-	err = fifo_pins_export(s->pins, comp_id, "sampler", n, cfg[n], HAL_IN);
+	err = fifo_pins_export(s->pins, fm->comp_id, "sampler", n, cfg[n], HAL_IN);
 	if (!err)
-		err = hal_pin_bit_newf(HAL_IN, &s->enable, comp_id, "sampler.%d.enable", n);
+		err = hal_pin_bit_newf(HAL_IN, &s->enable, fm->comp_id, "sampler.%d.enable", n);
 	if (!err)
-		err = hal_pin_s32_newf(HAL_OUT, &s->curr_depth, comp_id, "sampler.%d.curr-depth", n);
+		err = hal_pin_s32_newf(HAL_OUT, &s->curr_depth, fm->comp_id, "sampler.%d.curr-depth", n);
 	if (!err)
-		err = hal_pin_bit_newf(HAL_OUT, &s->full, comp_id, "sampler.%d.full", n);
+		err = hal_pin_bit_newf(HAL_OUT, &s->full, fm->comp_id, "sampler.%d.full", n);
 	if (!err)
-		err = hal_param_s32_newf(HAL_RW, &s->overruns, comp_id, "sampler.%d.overruns", n);
+		err = hal_param_s32_newf(HAL_RW, &s->overruns, fm->comp_id, "sampler.%d.overruns", n);
 	if (!err)
-		err = hal_param_s32_newf(HAL_RW, &s->sample_num, comp_id, "sampler.%d.sample-num", n);
+		err = hal_param_s32_newf(HAL_RW, &s->sample_num, fm->comp_id, "sampler.%d.sample-num", n);
 	if (err)
 		return err;
 	*s->enable = true;
 	rtapi_snprintf(fn, sizeof(fn), "sampler.%d", n);
-	return hal_export_funct(fn, sample, s, 1, 0, comp_id);
-}
-
-static void remove_all(void)
-{
-	int n;
-
-	hal_exit(comp_id);	/* first: no thread runs sample() any more */
-	for (n = 0; n < HAL_FIFO_MAX_FIFOS; n++)
-		fifo_shm_destroy(&shm[n], module_id);
-	rtapi_exit(module_id);
+	return hal_export_funct(fn, sample, s, 1, 0, fm->comp_id);
 }
 
 int rtapi_app_main(void)
 {
-	struct sampler *all;
-	int num_fifos, n, err;
-
-	num_fifos = fifo_module_count("sampler", cfg, depth);
-	if (num_fifos < 0)
-		return num_fifos;
-	module_id = rtapi_init("sampler");	/* owns the shared memory */
-	if (module_id < 0) {
-		rtapi_print_msg(RTAPI_MSG_ERR, "sampler: rtapi_init failed (%d)\n", module_id);
-		return module_id;
-	}
-	comp_id = hal_init("sampler");
-	if (comp_id < 0) {
-		rtapi_exit(module_id);
-		return comp_id;
-	}
-	all = hal_malloc(num_fifos * (long)sizeof(*all));
-	err = all ? 0 : -ENOMEM;
-	if (!all)
-		rtapi_print_msg(RTAPI_MSG_ERR, "sampler: out of HAL memory for %d FIFOs\n", num_fifos);
-	for (n = 0; !err && n < num_fifos; n++)
-		err = sampler_export(&all[n], n);
-	if (err) {
-		remove_all();
-		return err;
-	}
-	hal_ready(comp_id);
-	return 0;
+	return fifo_module_load(&mod, cfg, depth, sizeof(struct sampler), sampler_export);
 }
 
 void rtapi_app_exit(void)
 {
-	remove_all();
+	fifo_module_remove(&mod);
 }

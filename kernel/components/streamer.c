@@ -31,9 +31,7 @@ struct streamer {		/* in hal_malloc() memory, one per FIFO */
 	union fifo_pin_ptr pins[HAL_FIFO_MAX_PINS];
 };
 
-static int module_id;
-static int comp_id;
-static struct fifo_shm shm[HAL_FIFO_MAX_FIFOS];	/* init/exit only: what to delete */
+static struct fifo_module mod = { .name = "streamer" };	/* init/exit only */
 
 /* One record per call; with none available the pins keep their values and an
  * underrun is counted. */
@@ -74,79 +72,43 @@ static void update(void *arg, long period_ns)
 	*s->empty = used == 0;
 }
 
-static int streamer_export(struct streamer *s, int n)
+static int streamer_export(struct fifo_module *fm, void *mem, int n)
 {
+	struct streamer *s = mem;
 	char fn[HAL_NAME_LEN + 1];
 	int m, err;
 
-	err = fifo_shm_create(&shm[n], "streamer", module_id, STREAMER_SHMEM_KEY, n, cfg[n], depth[n]);
+	err = fifo_shm_create(&fm->shm[n], "streamer", fm->module_id, STREAMER_SHMEM_KEY, n, cfg[n], depth[n]);
 	if (err)
 		return err;
-	s->hdr = shm[n].hdr;
-	s->data = shm[n].data;
+	s->hdr = fm->shm[n].hdr;
+	s->data = fm->shm[n].data;
 	s->num_pins = hal_fifo_cfg_pins(cfg[n]);
 	for (m = 0; m < s->num_pins; m++)
 		s->type[m] = hal_fifo_type_of(cfg[n][m]);
-	err = fifo_pins_export(s->pins, comp_id, "streamer", n, cfg[n], HAL_OUT);
+	err = fifo_pins_export(s->pins, fm->comp_id, "streamer", n, cfg[n], HAL_OUT);
 	if (!err)
-		err = hal_pin_s32_newf(HAL_OUT, &s->curr_depth, comp_id, "streamer.%d.curr-depth", n);
+		err = hal_pin_s32_newf(HAL_OUT, &s->curr_depth, fm->comp_id, "streamer.%d.curr-depth", n);
 	if (!err)
-		err = hal_pin_bit_newf(HAL_OUT, &s->empty, comp_id, "streamer.%d.empty", n);
+		err = hal_pin_bit_newf(HAL_OUT, &s->empty, fm->comp_id, "streamer.%d.empty", n);
 	if (!err)
-		err = hal_pin_bit_newf(HAL_IN, &s->enable, comp_id, "streamer.%d.enable", n);
+		err = hal_pin_bit_newf(HAL_IN, &s->enable, fm->comp_id, "streamer.%d.enable", n);
 	if (!err)
-		err = hal_pin_s32_newf(HAL_IO, &s->underruns, comp_id, "streamer.%d.underruns", n);
+		err = hal_pin_s32_newf(HAL_IO, &s->underruns, fm->comp_id, "streamer.%d.underruns", n);
 	if (err)
 		return err;
 	*s->enable = true;
 	*s->empty = true;
 	rtapi_snprintf(fn, sizeof(fn), "streamer.%d", n);
-	return hal_export_funct(fn, update, s, 1, 0, comp_id);
-}
-
-static void remove_all(void)
-{
-	int n;
-
-	hal_exit(comp_id);	/* first: no thread runs update() any more */
-	for (n = 0; n < HAL_FIFO_MAX_FIFOS; n++)
-		fifo_shm_destroy(&shm[n], module_id);
-	rtapi_exit(module_id);
+	return hal_export_funct(fn, update, s, 1, 0, fm->comp_id);
 }
 
 int rtapi_app_main(void)
 {
-	struct streamer *all;
-	int num_fifos, n, err;
-
-	num_fifos = fifo_module_count("streamer", cfg, depth);
-	if (num_fifos < 0)
-		return num_fifos;
-	module_id = rtapi_init("streamer");	/* owns the shared memory */
-	if (module_id < 0) {
-		rtapi_print_msg(RTAPI_MSG_ERR, "streamer: rtapi_init failed (%d)\n", module_id);
-		return module_id;
-	}
-	comp_id = hal_init("streamer");
-	if (comp_id < 0) {
-		rtapi_exit(module_id);
-		return comp_id;
-	}
-	all = hal_malloc(num_fifos * (long)sizeof(*all));
-	err = all ? 0 : -ENOMEM;
-	if (!all)
-		rtapi_print_msg(RTAPI_MSG_ERR, "streamer: out of HAL memory for %d FIFOs\n", num_fifos);
-	for (n = 0; !err && n < num_fifos; n++)
-		err = streamer_export(&all[n], n);
-	if (err) {
-		remove_all();
-		return err;
-	}
-	hal_ready(comp_id);
-	return 0;
+	return fifo_module_load(&mod, cfg, depth, sizeof(struct streamer), streamer_export);
 }
 
 void rtapi_app_exit(void)
 {
-	remove_all();
+	fifo_module_remove(&mod);
 }
