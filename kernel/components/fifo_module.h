@@ -174,10 +174,10 @@ static inline void fifo_module_remove(struct fifo_module *m)
 }
 
 /* rtapi_app_main() of a FIFO module: check cfg=/depth=, register with RTAPI and
- * HAL, give every FIFO 'size' bytes of HAL memory and let export(m, mem, n) make
+ * HAL, give every FIFO 'size' bytes of HAL memory and let export_fifo(m, mem, n) make
  * its shared memory, pins and function. 0, or -errno with nothing left behind. */
 static inline int fifo_module_load(struct fifo_module *m, char *const *cfg, const int *depth,
-				   long size, int (*export)(struct fifo_module *m, void *mem, int n))
+				   long size, int (*export_fifo)(struct fifo_module *m, void *mem, int n))
 {
 	char *all;
 	int num, n, err;
@@ -195,12 +195,12 @@ static inline int fifo_module_load(struct fifo_module *m, char *const *cfg, cons
 		rtapi_exit(m->module_id);
 		return m->comp_id;
 	}
-	all = hal_malloc(num * size);
+	all = (char *)hal_malloc(num * size);
 	err = all ? 0 : -ENOMEM;
 	if (!all)
 		rtapi_print_msg(RTAPI_MSG_ERR, "%s: out of HAL memory for %d FIFOs\n", m->name, num);
 	for (n = 0; !err && n < num; n++)
-		err = export(m, all + n * size, n);
+		err = export_fifo(m, all + n * size, n);
 	if (err) {
 		fifo_module_remove(m);
 		return err;

@@ -127,7 +127,31 @@ private:
         if (!c_.doc.empty())
             o_ << "MODULE_DESCRIPTION(" << c_quote(c_.doc) << ");\n";
         o_ << "\n#define __COMP_MAX_INSTANCES " << kMaxInstances << "\n";
+        init_attribute();
         o_ << "static int comp_id;\n";
+    }
+
+    // The kernel runs module init outside FPU sections, yet an fp component's file is
+    // compiled with SSE, and gcc uses SSE for plain copies and stack zeroing too. Init
+    // code is therefore confined to integer registers, unless a float default is a C
+    // name (e.g. M_PI) that only an FP instruction can store.
+    void init_attribute()
+    {
+        bool fp_default = false;
+        unsigned long long bits;
+        for (const Item& it : c_.items)
+            fp_default = fp_default || (it.type == HalType::Float && !it.default_value.empty() &&
+                                        !float_bits(it.default_value, &bits));
+        for (const Variable& v : c_.variables)
+            fp_default = fp_default || (is_double_ctype(v.ctype) && !v.default_value.empty() &&
+                                        !float_bits(v.default_value, &bits));
+        if (fp_default || userspace()) {
+            o_ << "#define __COMP_INIT\n";
+            return;
+        }
+        o_ << "#if defined(__KERNEL__) && defined(__x86_64__)\n"
+              "#define __COMP_INIT __attribute__((target(\"general-regs-only\")))\n"
+              "#else\n#define __COMP_INIT\n#endif\n";
     }
 
     // A module parameter: RTAPI_MP_* in a realtime module, a plain variable in userspace.
@@ -342,11 +366,11 @@ private:
     void export_function()
     {
         if (c_.has_personality())  // read before export() shadows the array with the instance's value
-            o_ << "static int __comp_personality_of(long i)\n{\n"
+            o_ << "static __COMP_INIT int __comp_personality_of(long i)\n{\n"
                   "\treturn i >= 0 && i < __COMP_MAX_INSTANCES ? personality[i] : 0;\n}\n\n";
         o_ << "/* Make one instance: its pins, params and functions named PREFIX.*;\n"
               " * extra_arg is the instance number. 0 or -errno (the caller hal_exit()s). */\n";
-        o_ << "static int export(char *prefix, long extra_arg)\n{\n"
+        o_ << "static __COMP_INIT int export(char *prefix, long extra_arg)\n{\n"
               "\tchar buf[HAL_NAME_LEN + 1];\n"
               "\tstruct __comp_state *inst;\n"
               "\tint r = 0, j = 0, personality;\n\n"
@@ -393,7 +417,7 @@ private:
         if (c_.option_on("constructable") && !c_.is_singleton())
             o_ << "/* hal_set_constructor(): one more instance named PREFIX. */\n"
                   "static int __comp_next_index;\n"
-                  "static int __comp_construct(const char *prefix, const char *arg)\n{\n"
+                  "static __COMP_INIT int __comp_construct(const char *prefix, const char *arg)\n{\n"
                   "\tchar buf[HAL_NAME_LEN + 1];\n\n\t(void)arg;\n"
                   "\trtapi_snprintf(buf, sizeof(buf), \"%s\", prefix);\n"
                   "\treturn export(buf, __comp_next_index++);\n}\n\n";
@@ -406,9 +430,9 @@ private:
         if (!has_count_params())
             return;
         const std::string n = c_.name;
-        o_ << "static int __comp_names_given(void)\n{\n\treturn names[0] && names[0][0];\n}\n\n";
+        o_ << "static __COMP_INIT int __comp_names_given(void)\n{\n\treturn names[0] && names[0][0];\n}\n\n";
         o_ << "/* Number of instances asked for by count= or names=, or -EINVAL. */\n"
-              "static int __comp_instance_count(void)\n{\n\tint i, k, n;\n\n";
+              "static __COMP_INIT int __comp_instance_count(void)\n{\n\tint i, k, n;\n\n";
         o_ << "\tif (!__comp_names_given()) {\n"
               "\t\tif (count < 0)\n\t\t\treturn __comp_default_count;\n"
               "\t\tif (count < 1 || count > __COMP_MAX_INSTANCES) {\n"
@@ -437,7 +461,7 @@ private:
     void app_main()
     {
         const std::string n = c_.name;
-        o_ << "int rtapi_app_main(void)\n{\n\tchar buf[HAL_NAME_LEN + 1];\n\tint r = 0, i, n;\n\n";
+        o_ << "__COMP_INIT int rtapi_app_main(void)\n{\n\tchar buf[HAL_NAME_LEN + 1];\n\tint r = 0, i, n;\n\n";
         if (c_.is_singleton()) {
             o_ << "\tn = 1;\n";
         } else if (c_.option_on("count_function")) {
@@ -469,7 +493,7 @@ private:
             o_ << "\t\textra_cleanup();\n";
         o_ << "\t\thal_exit(comp_id);\n\t\treturn r;\n\t}\n"
               "\thal_ready(comp_id);\n\treturn 0;\n}\n\n";
-        o_ << "void rtapi_app_exit(void)\n{\n";
+        o_ << "__COMP_INIT void rtapi_app_exit(void)\n{\n";
         if (c_.option_on("extra_cleanup"))
             o_ << "\textra_cleanup();\n";
         o_ << "\thal_exit(comp_id);\n}\n";
