@@ -13,11 +13,13 @@ pass=0 fail=0
 for t in /tests/cases/*.sh; do
 	name=${t##*/}; name=${name%.sh}
 	echo "KTEST-BEGIN $name"
+	t0=$(cut -d. -f1 /proc/uptime)
 	if sh -e "$t"; then
-		echo "KTEST $name PASS"; pass=$((pass + 1))
+		res=PASS; pass=$((pass + 1))
 	else
-		echo "KTEST $name FAIL"; fail=$((fail + 1))
+		res=FAIL; fail=$((fail + 1))
 	fi
+	echo "KTEST $name $res ($(($(cut -d. -f1 /proc/uptime) - t0)) s)"
 	# leave a clean kernel for the next case whatever this one did
 	for m in $(lsmod | awk 'NR > 1 && $1 != "rtapi" && $1 != "hal_lib" { print $1 }'); do rmmod "$m"; done
 	rmmod hal_lib 2>/dev/null; rmmod rtapi 2>/dev/null

@@ -127,6 +127,7 @@ private:
         if (!c_.doc.empty())
             o_ << "MODULE_DESCRIPTION(" << c_quote(c_.doc) << ");\n";
         o_ << "\n#define __COMP_MAX_INSTANCES " << kMaxInstances << "\n";
+        o_ << "#define __COMP_MAX_COUNT " << kMaxCount << "\n";
         init_attribute();
         o_ << "static int comp_id;\n";
     }
@@ -435,10 +436,10 @@ private:
               "static __COMP_INIT int __comp_instance_count(void)\n{\n\tint i, k, n;\n\n";
         o_ << "\tif (!__comp_names_given()) {\n"
               "\t\tif (count < 0)\n\t\t\treturn __comp_default_count;\n"
-              "\t\tif (count < 1 || count > __COMP_MAX_INSTANCES) {\n"
+              "\t\tif (count < 1 || count > __COMP_MAX_COUNT) {\n"
               "\t\t\trtapi_print_msg(RTAPI_MSG_ERR, \"" << n
            << ": count=%d is out of range, must be 1..%d\\n\",\n"
-              "\t\t\t\t\tcount, __COMP_MAX_INSTANCES);\n"
+              "\t\t\t\t\tcount, __COMP_MAX_COUNT);\n"
               "\t\t\treturn -EINVAL;\n\t\t}\n\t\treturn count;\n\t}\n";
         o_ << "\tif (count >= 0) {\n"
               "\t\trtapi_print_msg(RTAPI_MSG_ERR,\n\t\t\t\t\"" << n
