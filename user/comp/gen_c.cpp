@@ -467,7 +467,8 @@ private:
             o_ << "\tn = 1;\n";
         } else if (c_.option_on("count_function")) {
             o_ << "\tn = get_count();\n"
-                  "\tif (n < 0 || n > __COMP_MAX_INSTANCES) {\n"
+                  "\tif (n < 0)\n\t\treturn n;\t/* get_count() said why */\n"
+                  "\tif (n > __COMP_MAX_INSTANCES) {\n"
                   "\t\trtapi_print_msg(RTAPI_MSG_ERR, \"" << n
                << ": %d instances asked for, must be 0..%d\\n\", n, __COMP_MAX_INSTANCES);\n"
                   "\t\treturn -EINVAL;\n\t}\n";
