@@ -65,3 +65,6 @@ fi
 
 echo "== stepgen: maximum step rates and make-pulses cost"
 "$build/bin/stepgen_bench"
+
+echo "== latency: thread wake-up error (simulated flavor here; see bench/latency-test.sh for real hardware)"
+"$here/latency-test.sh" 5
