@@ -5,6 +5,8 @@
 #   (a) halrun -f wall time for the load workload at N = 1000, 4000, 16000 + growth exponent
 #   (b) per-function cost (ns) for the funct workload at N = 1000
 #   (c) samples/s halsampler drains from the sample workload with 8 channels, + overruns
+#   then stepgen figures, thread wake-up latency (simulated flavor) and the kernel
+#   flavor's figures from inside qemu (emulated: behaviour, not speed)
 set -u
 build=$(cd "${1:-build}" && pwd)
 here=$(cd "$(dirname "$0")" && pwd)
@@ -62,9 +64,18 @@ if halcmd -f "$tmp/sample.hal" > "$tmp/sample.out" 2>&1; then
 else
 	echo "setup failed:"; tail -3 "$tmp/sample.out"
 fi
+halrun -U >/dev/null 2>&1
 
 echo "== stepgen: maximum step rates and make-pulses cost"
 "$build/bin/stepgen_bench"
 
 echo "== latency: thread wake-up error (simulated flavor here; see bench/latency-test.sh for real hardware)"
 "$here/latency-test.sh" 5
+
+echo "== kernel flavor inside qemu (EMULATED under TCG: behaviour and scaling only, not speed or latency)"
+kver=$(ls /boot 2>/dev/null | sed -n 's/^vmlinuz-\(.*-amd64\)$/\1/p' | grep -v -- -rt- | sort -V | tail -n 1)
+if [ -n "$kver" ] && [ -d "/usr/src/linux-headers-$kver" ]; then
+	KTEST_BENCH=1 "$here/../tests/kernel/run-kernel-tests.sh" "$kver" 2>&1 | grep '^BENCH' | sed 's/^BENCH /  /'
+else
+	echo "  skipped: no Debian kernel image/headers (run scripts/kernel-test-deps)"
+fi

@@ -25,7 +25,8 @@ build_static() {
 	{ cmake -S "$root" -B "$static" -DCMAKE_BUILD_TYPE=Release -DCMAKE_EXE_LINKER_FLAGS=-static \
 		"-DREADLINE_LIBRARY=/usr/lib/$libdir/libreadline.a;/usr/lib/$libdir/libtinfo.a" \
 		-DHAL_KMOD_INSTALL_DIR=$vm_moddir -DCMAKE_INSTALL_PREFIX=/usr &&
-	  cmake --build "$static" -j"$(nproc)" --target halcmd halrun halsampler halstreamer emc_module_helper
+	  cmake --build "$static" -j"$(nproc)" --target halcmd halrun halsampler halstreamer emc_module_helper \
+		thread_cost
 	} >"$static.log" 2>&1 || { cat "$static.log" >&2; exit 1; }
 }
 
@@ -47,6 +48,12 @@ kver=${1:-$(ls /boot | sed -n 's/^vmlinuz-\(.*-amd64\)$/\1/p' | grep -v -- -rt- 
 kdir=/usr/src/linux-headers-$kver
 [ -d "$kdir" ] || { echo "no $kdir: run scripts/kernel-test-deps" >&2; exit 2; }
 out=${KTEST_BUILD:-$root/build/kmod-test/$kver}
+# KTEST_BENCH=1: run the benchmark cases (bench-cases/) instead of the tests
+cases=$here/cases
+if [ -n "${KTEST_BENCH:-}" ]; then
+	cases=$here/bench-cases
+	out=$out-bench
+fi
 timeout_s=${KTEST_TIMEOUT:-900}
 start=$(date +%s)
 
@@ -84,7 +91,16 @@ cp "$here/run-hal-tests-vm.sh" "$ird/tests/"
 cc -static -O2 -Wall -I"$root/kernel/rtapi" -I"$root/kernel/hal" \
 	-o "$out/initramfs/tests/hal_segcheck" "$here/hal_segcheck.c"
 cp "$here/init.sh" "$ird/init"
-cp "$here"/cases/*.sh "$ird/tests/cases/"
+cp "$cases"/*.sh "$ird/tests/cases/"
+if [ -n "${KTEST_BENCH:-}" ]; then	# the standard workloads, generated here (bash)
+	gen=$root/../shared/bench/gen-workload.sh
+	mkdir -p "$ird/bench"
+	# (gen-workload.sh exits 1 after printing a load workload: its last test is false)
+	for n in 1000 4000 16000; do "$gen" load $n >"$ird/bench/load-$n.hal" || true; done
+	"$gen" funct 1000 >"$ird/bench/funct-1000.hal"
+	"$gen" sample 8 >"$ird/bench/sample-8.hal" || true
+	strip -o "$ird/bin/thread_cost" "$static/bin/thread_cost"
+fi
 chmod +x "$ird/init"
 (cd "$ird" && find . | cpio -o -H newc --quiet | gzip -1) >"$out/initramfs.cpio.gz"
 
@@ -96,7 +112,7 @@ timeout "$timeout_s" qemu-system-x86_64 -machine q35 -accel tcg -cpu max -m 768 
 	</dev/null >"$log" 2>&1 || true
 tr -d '\r' <"$log" >"$log.txt"
 
-grep -E '^(KTEST|FAILED:|HALTEST|\| |HAL tests)' "$log.txt" || true
+grep -E '^(KTEST|FAILED:|HALTEST|\| |HAL tests|BENCH)' "$log.txt" || true
 echo "($kver: $(($(date +%s) - start)) s)"
 done_line=$(grep '^KTEST-DONE' "$log.txt" || true)
 if [ -z "$done_line" ]; then
