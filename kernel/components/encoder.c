@@ -13,6 +13,7 @@
 #include "rtapi.h"
 #include "rtapi_app.h"
 #include "hal.h"
+#include "comp_setup.h"
 #include "instance_names.h"
 #include "encoder_core.h"
 
@@ -182,15 +183,10 @@ int rtapi_app_main(void)
 	n = instance_count("encoder", "num_chan", num_chan, names, ENCODER_MAX, ENCODER_MAX);
 	if (n < 0)
 		return n;
-	comp_id = hal_init("encoder");
-	if (comp_id < 0)
-		return comp_id;
-	set = hal_malloc((long)sizeof(*set) + n * (long)sizeof(set->chan[0]));
-	err = set ? 0 : -ENOMEM;
+	set = comp_setup("encoder", (long)sizeof(*set) + n * (long)sizeof(set->chan[0]), &comp_id, &err);
 	if (!set)
-		rtapi_print_msg(RTAPI_MSG_ERR, "encoder: out of HAL memory for %d channels\n", n);
-	else
-		set->num = n;
+		return err;
+	set->num = n;
 	for (i = 0; !err && i < n; i++) {
 		instance_prefix(prefix, sizeof(prefix), "encoder", names, i);
 		err = encoder_export(&set->chan[i], prefix);
@@ -201,12 +197,7 @@ int rtapi_app_main(void)
 	if (!err)
 		err = hal_export_funct("encoder.capture-position", encoder_capture_position, set, 1,
 				       0, comp_id);
-	if (err) {
-		hal_exit(comp_id);	/* removes every pin and function made so far */
-		return err;
-	}
-	hal_ready(comp_id);
-	return 0;
+	return comp_finish(comp_id, err);
 }
 
 void rtapi_app_exit(void)

@@ -9,6 +9,7 @@
 #include "rtapi.h"
 #include "rtapi_app.h"
 #include "hal.h"
+#include "comp_setup.h"
 #include "stepgen_core.h"
 #include "stepgen_loop.h"
 
@@ -179,15 +180,10 @@ int rtapi_app_main(void)
 	}
 	if (num == 0)
 		num = 3;	/* like stepgen: three step/dir generators */
-	comp_id = hal_init("freqgen");
-	if (comp_id < 0)
-		return comp_id;
-	c = hal_malloc(sizeof(*c));
-	err = c ? 0 : -ENOMEM;
+	c = comp_setup("freqgen", sizeof(*c), &comp_id, &err);
 	if (!c)
-		rtapi_print_msg(RTAPI_MSG_ERR, "freqgen: out of HAL memory for %d generators\n", num);
-	else
-		c->num_chan = num;
+		return err;
+	c->num_chan = num;
 	for (n = 0; !err && n < num; n++) {
 		struct freqgen_chan *ch = &c->chan[n];
 
@@ -207,12 +203,7 @@ int rtapi_app_main(void)
 		err = hal_export_funct("freqgen.update-freq", update_freq, c, 1, 0, comp_id);
 	if (!err)
 		err = hal_export_funct("freqgen.capture-position", capture_position, c, 1, 0, comp_id);
-	if (err) {
-		hal_exit(comp_id);
-		return err;
-	}
-	hal_ready(comp_id);
-	return 0;
+	return comp_finish(comp_id, err);
 }
 
 void rtapi_app_exit(void)

@@ -8,6 +8,7 @@
 #include "rtapi.h"
 #include "rtapi_app.h"
 #include "hal.h"
+#include "comp_setup.h"
 #include "instance_names.h"
 #include "pid_core.h"
 #include "pid_pins.h"
@@ -71,23 +72,14 @@ int rtapi_app_main(void)
 	n = instance_count("pid", "num_chan", num_chan, names, PID_MAX, PID_MAX);
 	if (n < 0)
 		return n;
-	comp_id = hal_init("pid");
-	if (comp_id < 0)
-		return comp_id;
-	all = hal_malloc(n * (long)sizeof(*all));
-	err = all ? 0 : -ENOMEM;
+	all = comp_setup("pid", n * (long)sizeof(*all), &comp_id, &err);
 	if (!all)
-		rtapi_print_msg(RTAPI_MSG_ERR, "pid: out of HAL memory for %d loops\n", n);
+		return err;
 	for (i = 0; !err && i < n; i++) {
 		instance_prefix(prefix, sizeof(prefix), "pid", names, i);
 		err = pid_export(&all[i], prefix);
 	}
-	if (err) {
-		hal_exit(comp_id);	/* removes every pin and function made so far */
-		return err;
-	}
-	hal_ready(comp_id);
-	return 0;
+	return comp_finish(comp_id, err);
 }
 
 void rtapi_app_exit(void)

@@ -6,6 +6,7 @@
 #include "rtapi.h"
 #include "rtapi_app.h"
 #include "hal.h"
+#include "comp_setup.h"
 #include "pwmgen_core.h"
 
 MODULE_LICENSE("GPL");
@@ -133,15 +134,10 @@ int rtapi_app_main(void)
 				"pwmgen: no output_type= given; e.g. output_type=0,1,2 makes three generators\n");
 		return -EINVAL;
 	}
-	comp_id = hal_init("pwmgen");
-	if (comp_id < 0)
-		return comp_id;
-	c = hal_malloc(sizeof(*c));
-	err = c ? 0 : -ENOMEM;
+	c = comp_setup("pwmgen", sizeof(*c), &comp_id, &err);
 	if (!c)
-		rtapi_print_msg(RTAPI_MSG_ERR, "pwmgen: out of HAL memory for %d generators\n", num);
-	else
-		c->num_chan = num;
+		return err;
+	c->num_chan = num;
 	for (n = 0; !err && n < num; n++) {
 		c->chan[n].type = output_type[n];
 		err = export_chan(&c->chan[n], n);
@@ -152,12 +148,7 @@ int rtapi_app_main(void)
 		err = hal_export_funct("pwmgen.make-pulses", make_pulses, c, 0, 0, comp_id);
 	if (!err)
 		err = hal_export_funct("pwmgen.update", update, c, 1, 0, comp_id);
-	if (err) {
-		hal_exit(comp_id);
-		return err;
-	}
-	hal_ready(comp_id);
-	return 0;
+	return comp_finish(comp_id, err);
 }
 
 void rtapi_app_exit(void)

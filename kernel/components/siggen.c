@@ -7,6 +7,7 @@
 #include "rtapi.h"
 #include "rtapi_app.h"
 #include "hal.h"
+#include "comp_setup.h"
 #include "instance_names.h"
 #include "siggen_core.h"
 
@@ -97,23 +98,14 @@ int rtapi_app_main(void)
 	n = instance_count("siggen", "num_chan", num_chan, names, SIGGEN_MAX, SIGGEN_MAX);
 	if (n < 0)
 		return n;
-	comp_id = hal_init("siggen");
-	if (comp_id < 0)
-		return comp_id;
-	all = hal_malloc(n * (long)sizeof(*all));
-	err = all ? 0 : -ENOMEM;
+	all = comp_setup("siggen", n * (long)sizeof(*all), &comp_id, &err);
 	if (!all)
-		rtapi_print_msg(RTAPI_MSG_ERR, "siggen: out of HAL memory for %d generators\n", n);
+		return err;
 	for (i = 0; !err && i < n; i++) {
 		instance_prefix(prefix, sizeof(prefix), "siggen", names, i);
 		err = siggen_export(&all[i], prefix);
 	}
-	if (err) {
-		hal_exit(comp_id);	/* removes every pin and function made so far */
-		return err;
-	}
-	hal_ready(comp_id);
-	return 0;
+	return comp_finish(comp_id, err);
 }
 
 void rtapi_app_exit(void)

@@ -9,6 +9,7 @@
 #include "rtapi.h"
 #include "rtapi_app.h"
 #include "hal.h"
+#include "comp_setup.h"
 #include "instance_names.h"
 #include "sim_encoder_core.h"
 
@@ -99,15 +100,10 @@ int rtapi_app_main(void)
 			   SIM_ENCODER_MAX);
 	if (n < 0)
 		return n;
-	comp_id = hal_init("sim_encoder");
-	if (comp_id < 0)
-		return comp_id;
-	set = hal_malloc((long)sizeof(*set) + n * (long)sizeof(set->chan[0]));
-	err = set ? 0 : -ENOMEM;
+	set = comp_setup("sim_encoder", (long)sizeof(*set) + n * (long)sizeof(set->chan[0]), &comp_id, &err);
 	if (!set)
-		rtapi_print_msg(RTAPI_MSG_ERR, "sim_encoder: out of HAL memory for %d channels\n", n);
-	else
-		set->num = n;
+		return err;
+	set->num = n;
 	for (i = 0; !err && i < n; i++) {
 		instance_prefix(prefix, sizeof(prefix), "sim-encoder", names, i);
 		err = sim_encoder_export(&set->chan[i], prefix);
@@ -118,12 +114,7 @@ int rtapi_app_main(void)
 	if (!err)
 		err = hal_export_funct("sim-encoder.update-speed", sim_encoder_update_speed, set, 1,
 				       0, comp_id);
-	if (err) {
-		hal_exit(comp_id);	/* removes every pin, parameter and function made so far */
-		return err;
-	}
-	hal_ready(comp_id);
-	return 0;
+	return comp_finish(comp_id, err);
 }
 
 void rtapi_app_exit(void)

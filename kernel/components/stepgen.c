@@ -9,6 +9,7 @@
 #include "rtapi.h"
 #include "rtapi_app.h"
 #include "hal.h"
+#include "comp_setup.h"
 #include "stepgen_core.h"
 #include "stepgen_loop.h"
 
@@ -282,13 +283,9 @@ int rtapi_app_main(void)
 	num = parse_params(types, vmode, &user_pat);
 	if (num < 0)
 		return num;
-	comp_id = hal_init("stepgen");
-	if (comp_id < 0)
-		return comp_id;
-	c = hal_malloc(sizeof(*c));
-	err = c ? 0 : -ENOMEM;
+	c = comp_setup("stepgen", sizeof(*c), &comp_id, &err);
 	if (!c)
-		rtapi_print_msg(RTAPI_MSG_ERR, "stepgen: out of HAL memory for %d generators\n", num);
+		return err;
 	if (c) {
 		c->num_chan = num;
 		c->user_pat = user_pat;
@@ -303,12 +300,7 @@ int rtapi_app_main(void)
 		err = hal_export_funct("stepgen.update-freq", update_freq, c, 1, 0, comp_id);
 	if (!err)
 		err = hal_export_funct("stepgen.capture-position", capture_position, c, 1, 0, comp_id);
-	if (err) {
-		hal_exit(comp_id);	/* removes every pin, param and function made so far */
-		return err;
-	}
-	hal_ready(comp_id);
-	return 0;
+	return comp_finish(comp_id, err);
 }
 
 void rtapi_app_exit(void)

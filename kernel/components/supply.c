@@ -7,6 +7,7 @@
 #include "rtapi.h"
 #include "rtapi_app.h"
 #include "hal.h"
+#include "comp_setup.h"
 
 MODULE_LICENSE("GPL");
 MODULE_DESCRIPTION("set output pins from parameters (obsolete)");
@@ -67,21 +68,12 @@ int rtapi_app_main(void)
 				num_chan, SUPPLY_MAX_CHAN);
 		return -EINVAL;
 	}
-	comp_id = hal_init("supply");
-	if (comp_id < 0)
-		return comp_id;
-	all = hal_malloc(num_chan * (long)sizeof(*all));
-	err = all ? 0 : -ENOMEM;
+	all = comp_setup("supply", num_chan * (long)sizeof(*all), &comp_id, &err);
 	if (!all)
-		rtapi_print_msg(RTAPI_MSG_ERR, "supply: out of HAL memory for %d channels\n", num_chan);
+		return err;
 	for (n = 0; !err && n < num_chan; n++)
 		err = export_supply(&all[n], n);
-	if (err) {
-		hal_exit(comp_id);
-		return err;
-	}
-	hal_ready(comp_id);
-	return 0;
+	return comp_finish(comp_id, err);
 }
 
 void rtapi_app_exit(void)

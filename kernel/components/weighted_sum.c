@@ -7,6 +7,7 @@
 #include "rtapi.h"
 #include "rtapi_app.h"
 #include "hal.h"
+#include "comp_setup.h"
 #include "weighted_sum_core.h"
 
 MODULE_LICENSE("GPL");
@@ -90,25 +91,15 @@ int rtapi_app_main(void)
 				"weighted_sum: no wsum_sizes= given; e.g. wsum_sizes=8,4 makes two summers\n");
 		return -EINVAL;
 	}
-	comp_id = hal_init("weighted_sum");
-	if (comp_id < 0)
-		return comp_id;
-	c = hal_malloc(sizeof(*c));
-	err = c ? 0 : -ENOMEM;
+	c = comp_setup("weighted_sum", sizeof(*c), &comp_id, &err);
 	if (!c)
-		rtapi_print_msg(RTAPI_MSG_ERR, "weighted_sum: out of HAL memory for %d summers\n", num);
-	else
-		c->num = num;
+		return err;
+	c->num = num;
 	for (n = 0; !err && n < num; n++)
 		err = export_wsum(&c->w[n], n, wsum_sizes[n]);
 	if (!err)
 		err = hal_export_funct("process_wsums", process_wsums, c, 0, 0, comp_id);
-	if (err) {
-		hal_exit(comp_id);
-		return err;
-	}
-	hal_ready(comp_id);
-	return 0;
+	return comp_finish(comp_id, err);
 }
 
 void rtapi_app_exit(void)
