@@ -21,6 +21,12 @@ awk '!/^[ \t]*(#|$)/ { print }' "$manifest" | while read -r name fp sources; do
 			fi
 			s=${s%.comp}.c
 			ln -sfn "$gen" "$build/$s";;
+		*/*)	# a path with a directory is relative to kernel/; the headers beside it
+			# are linked too, so its #include "x.h" finds them in the build tree
+			ln -sfn "$src/kernel/$s" "$build/$s"
+			for h in "$src/kernel/$(dirname "$s")"/*.h; do
+				[ -e "$h" ] && ln -sfn "$h" "$build/$(dirname "$s")/"
+			done;;
 		*)	ln -sfn "$src/kernel/components/$s" "$build/$s";;
 		esac
 		objs="$objs ${s%.c}.o"

@@ -117,6 +117,20 @@ int rtapi_task_self(void);	/* id of the calling task, or -EINVAL outside one */
 /* Overruns (missed periods) counted for a task since it started. */
 long long rtapi_task_overruns(int task_id);
 
+/* --- floating point outside realtime functions ---
+ * Init/exit code that must compute or assign floats calls a function of an FP
+ * translation unit (*_fp.c) between these two: kernel_fpu_begin/end in the kernel
+ * flavor (preemption is off in between: no hal_* calls, no sleeping, no printing),
+ * nothing in the simulated flavor. Realtime functions exported with uses_fp = 1
+ * already run inside an FPU section opened by their thread: never call these there. */
+#if defined(__KERNEL__)
+void rtapi_fpu_begin(void);
+void rtapi_fpu_end(void);
+#else
+static inline void rtapi_fpu_begin(void) {}
+static inline void rtapi_fpu_end(void) {}
+#endif
+
 /* --- shared memory (rtapi_shmem(3rtapi)) --- */
 int rtapi_shmem_new(int key, int module_id, unsigned long int size);
 int rtapi_shmem_delete(int shmem_id, int module_id);

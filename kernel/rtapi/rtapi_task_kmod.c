@@ -316,3 +316,17 @@ void rtapi_task_kmod_exit(void)
 		rtapi_task_delete(id);
 	}
 }
+
+/* FPU sections for init/exit code (rtapi.h); the kernel's own calls are GPL-only
+ * inline wrappers, so components reach them through these. */
+void rtapi_fpu_begin(void)
+{
+	kernel_fpu_begin();
+}
+EXPORT_SYMBOL(rtapi_fpu_begin);
+
+void rtapi_fpu_end(void)
+{
+	kernel_fpu_end();
+}
+EXPORT_SYMBOL(rtapi_fpu_end);
