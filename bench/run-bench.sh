@@ -1,18 +1,27 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-2.0-or-later
 # make bench: the three figures of the foundation issue, from the standard
-# workloads of ../shared/bench/gen-workload.sh. Prints numbers; never fails on them.
+# workloads of bench/gen-workload.sh. Prints numbers; never fails on them.
 #   (a) halrun -f wall time for the load workload at N = 1000, 4000, 16000 + growth exponent
 #   (b) per-function cost (ns) for the funct workload at N = 1000
 #   (c) samples/s halsampler drains from the sample workload with 8 channels, + overruns
 #   then stepgen figures, thread wake-up latency (simulated flavor) and the kernel
 #   flavor's figures from inside qemu (emulated: behaviour, not speed)
+# BENCH_QUICK=1: small workloads, no latency or qemu part (the fresh-clone test
+# checks with it that the benchmark runs from a clone; its figures mean little).
 set -u
 build=$(cd "${1:-build}" && pwd)
 here=$(cd "$(dirname "$0")" && pwd)
-gen=${GEN_WORKLOAD:-$here/../../shared/bench/gen-workload.sh}
-[ -x "$gen" ] || gen=/work/shared/bench/gen-workload.sh
+gen=${GEN_WORKLOAD:-$here/gen-workload.sh}
 export PATH="$build/bin:$PATH"
+quick=${BENCH_QUICK:-0}
+if [ "$quick" = 1 ]; then
+	load_sizes="100 400 1600" funct_n=100 sample_count=3000
+else
+	load_sizes="1000 4000 16000" funct_n=1000 sample_count=30000
+fi
+set -- $load_sizes
+n_small=$1 n_mid=$2 n_big=$3
 export RTAPI_INSTANCE="bench-$$"
 tmp=$(mktemp -d)
 trap 'halrun -U >/dev/null 2>&1; rm -rf "$tmp"' EXIT
@@ -22,7 +31,7 @@ calc() { awk "BEGIN { print $* }"; }
 
 echo "== (a) config load: halrun -f of the 'load' workload"
 declare -A secs
-for n in 1000 4000 16000; do
+for n in $load_sizes; do
 	"$gen" load $n > "$tmp/load-$n.hal"
 	t0=$(now)
 	if ! halrun -f "$tmp/load-$n.hal" > "$tmp/load-$n.out" 2>&1; then
@@ -32,15 +41,15 @@ for n in 1000 4000 16000; do
 	secs[$n]=$(calc "$t1 - $t0")
 	printf "N=%-6d %8.3f s\n" $n "${secs[$n]}"
 done
-if [ -n "${secs[1000]:-}" ] && [ -n "${secs[16000]:-}" ]; then
-	exp=$(calc "log(${secs[16000]} / ${secs[1000]}) / log(16)")
-	printf "growth exponent (1000 -> 16000): %.2f  (1 = linear, 2 = quadratic)\n" "$exp"
-	exp=$(calc "log(${secs[16000]} / ${secs[4000]}) / log(4)")
-	printf "growth exponent (4000 -> 16000): %.2f  (includes the fixed start-up of rtapi_app)\n" "$exp"
+if [ -n "${secs[$n_small]:-}" ] && [ -n "${secs[$n_big]:-}" ]; then
+	exp=$(calc "log(${secs[$n_big]} / ${secs[$n_small]}) / log(16)")
+	printf "growth exponent ($n_small -> $n_big): %.2f  (1 = linear, 2 = quadratic)\n" "$exp"
+	exp=$(calc "log(${secs[$n_big]} / ${secs[$n_mid]}) / log(4)")
+	printf "growth exponent ($n_mid -> $n_big): %.2f  (includes the fixed start-up of rtapi_app)\n" "$exp"
 fi
 
-echo "== (b) per-function cost: 'funct' workload, N=1000, 1 ms thread"
-"$gen" funct 1000 > "$tmp/funct.hal"
+echo "== (b) per-function cost: 'funct' workload, N=$funct_n, 1 ms thread"
+"$gen" funct $funct_n > "$tmp/funct.hal"
 if halcmd -f "$tmp/funct.hal" > "$tmp/funct.out" 2>&1; then
 	sleep 0.5
 	"$build/bin/thread_cost" bench 3
@@ -52,7 +61,7 @@ halrun -U >/dev/null 2>&1
 echo "== (c) halsampler throughput: 'sample' workload, 8 channels, 100 us thread"
 "$gen" sample 8 > "$tmp/sample.hal"
 if halcmd -f "$tmp/sample.hal" > "$tmp/sample.out" 2>&1; then
-	count=30000
+	count=$sample_count
 	t0=$(now)
 	halsampler -c 0 -n $count > "$tmp/samples.txt" 2> "$tmp/sampler.err"
 	t1=$(now)
@@ -68,6 +77,11 @@ halrun -U >/dev/null 2>&1
 
 echo "== stepgen: maximum step rates and make-pulses cost"
 "$build/bin/stepgen_bench"
+
+if [ "$quick" = 1 ]; then
+	echo "== (BENCH_QUICK: no latency or kernel-flavor figures)"
+	exit 0
+fi
 
 echo "== latency: thread wake-up error (simulated flavor here; see bench/latency-test.sh for real hardware)"
 "$here/latency-test.sh" 5

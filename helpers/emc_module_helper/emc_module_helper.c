@@ -2,7 +2,7 @@
 /* emc_module_helper - lets halcmd load and unload the kernel flavor's realtime
  * modules without being root. Installed setuid root, so it trusts nothing from its
  * caller: only whitelisted module names, only from the compiled-in directory
- * (<EMC_MODULE_DIR>/<kernel release>/NAME.ko), only "param[=value]" arguments of
+ * (<EMC_MODULE_DIR>/<kernel release><EMC_MODULE_SUBDIR>/NAME.ko), only "param[=value]" arguments of
  * printable characters, and no capability but CAP_SYS_MODULE. It calls
  * finit_module(2)/delete_module(2) itself rather than running insmod: nothing else
  * is executed, and some insmod (busybox) retries a failed finit_module with
@@ -26,6 +26,9 @@
 
 #ifndef EMC_MODULE_DIR
 #error "EMC_MODULE_DIR (module base directory) must be compiled in"
+#endif
+#ifndef EMC_MODULE_SUBDIR	/* "/updates/dkms" for the modules DKMS installs */
+#define EMC_MODULE_SUBDIR ""
 #endif
 /* EMC_FAKE_CALLS (the unit tests' build only): instead of the two system calls,
  * append them to this file; they fail with EINVAL while "<file>.fail" exists. */
@@ -209,7 +212,8 @@ int main(int argc, char **argv)
 		return remove_module(name);
 	if (uname(&u))
 		return refuse(name, "cannot read the kernel release");
-	if (snprintf(path, sizeof(path), "%s/%s/%s.ko", EMC_MODULE_DIR, u.release, name) >=
+	if (snprintf(path, sizeof(path), "%s/%s%s/%s.ko", EMC_MODULE_DIR, u.release,
+		     EMC_MODULE_SUBDIR, name) >=
 	    (int)sizeof(path))
 		return refuse(name, "module path too long");
 	if (access(path, R_OK))

@@ -26,6 +26,9 @@ namespace fs = std::filesystem;
 #ifndef HAL_KMOD_INSTALL_DIR
 #define HAL_KMOD_INSTALL_DIR "/usr/local/lib/hal/modules"
 #endif
+#ifndef HAL_KMOD_INSTALL_SUBDIR
+#define HAL_KMOD_INSTALL_SUBDIR ""
+#endif
 
 static std::string kernel_release()
 {
@@ -75,7 +78,7 @@ std::string module_dir()
 {
     if (const char* env = std::getenv("HAL_KMOD_DIR"); env && *env)
         return env;
-    return std::string(HAL_KMOD_INSTALL_DIR) + "/" + kernel_release();
+    return std::string(HAL_KMOD_INSTALL_DIR) + "/" + kernel_release() + HAL_KMOD_INSTALL_SUBDIR;
 }
 
 std::vector<std::string> loaded_modules()
