@@ -5,7 +5,12 @@ BUILD ?= build
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?=
 
-.PHONY: all deps configure build test unit-test hal-test kmod kernel-test demo bench install clean
+# KERNEL_TEST=0 make test (= make test-sim): the simulated flavor only, no kernel
+# images, qemu, packages or root needed.
+KERNEL_TEST ?= 1
+
+.PHONY: all deps configure build test test-sim unit-test hal-test kmod kernel-test demo bench install clean \
+	deb package-test fresh-clone-test
 
 all: build
 
@@ -30,8 +35,12 @@ hal-test: build
 # Kernel flavor: modules built against Debian's standard and PREEMPT_RT kernels,
 # each booted in qemu (two VMs in parallel) to run the HAL-level suite.
 
-kmod:
-	$(MAKE) -f kernel/Makefile.kmod
+# The modules need the C that comp generates from the .comp sources: configure and
+# build just that (target comp_sources), then kbuild. KDIR=... picks another kernel.
+kmod: configure
+	@scripts/kernel-test-deps --headers
+	cmake --build $(BUILD) -j$(JOBS) --target comp_sources
+	COMP_GEN_DIR=$(abspath $(BUILD))/gen $(MAKE) -f kernel/Makefile.kmod -j$(JOBS)
 
 kernel-test: build
 	KERNEL_TEST_RT=1 scripts/kernel-test-deps
@@ -39,7 +48,24 @@ kernel-test: build
 		$$(ls -d /usr/src/linux-headers-*-amd64 | sed 's|.*/linux-headers-||' | grep -v -- -rt- | sort -V | tail -1) \
 		$$(ls -d /usr/src/linux-headers-*-rt-amd64 | sed 's|.*/linux-headers-||' | sort -V | tail -1)
 
-test: unit-test hal-test kernel-test
+test: unit-test hal-test $(if $(filter 0,$(KERNEL_TEST)),,kernel-test package-test fresh-clone-test)
+
+test-sim: unit-test hal-test
+
+# Debian packages (debhelper, dh-dkms) into $(BUILD)/deb/, checked by lintian.
+deb: deps
+	@scripts/deb-deps
+	tests/deb/build-debs.sh $(BUILD)/deb
+
+# The packages installed into a clean Debian 12 root: halrun there, an out-of-tree
+# component through pkg-config, dkms build for the standard and PREEMPT_RT kernels.
+package-test: deb
+	KERNEL_TEST_RT=1 scripts/kernel-test-deps
+	tests/deb/run-package-test.sh $(BUILD)/deb
+
+# make kmod and make bench from a fresh clone of this repository (HEAD).
+fresh-clone-test: build
+	tests/fresh-clone/run.sh $(BUILD)
 
 demo: build
 	demo/run-demo.sh $(BUILD)
