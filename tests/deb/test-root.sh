@@ -14,7 +14,7 @@ security=${DEBIAN_SECURITY_MIRROR:-http://deb.debian.org/debian-security}
 kstd=$(ls -d /usr/src/linux-headers-*-amd64 | sed 's|.*/linux-headers-||' | grep -v -- -rt- | sort -V | tail -n 1)
 krt=$(ls -d /usr/src/linux-headers-*-rt-amd64 | sed 's|.*/linux-headers-||' | sort -V | tail -n 1)
 [ -n "$kstd" ] && [ -n "$krt" ] || { echo "test-root: no -amd64/-rt-amd64 headers: run KERNEL_TEST_RT=1 scripts/kernel-test-deps" >&2; exit 2; }
-pkgs="dkms gcc make libc6-dev pkgconf linux-headers-$kstd linux-headers-$krt"
+pkgs="dkms gcc make libc6-dev pkgconf ccache linux-headers-$kstd linux-headers-$krt"
 key=$(echo "bookworm $pkgs" | sha256sum | cut -c1-12)
 tarball=$cache/root-$key.tar
 mkdir -p "$cache"
