@@ -53,6 +53,8 @@ std::string plot_script(const PlotOptions& opt, const std::vector<PlotChannel>& 
       << "set xlabel 'time (s)'\n"
       << "set ylabel 'value'\n"
       << "set grid\n"
+      // a margin above and below, so bits at 0 and 1 do not vanish into the border
+      << "set offsets 0, 0, graph 0.05, graph 0.05\n"
       << "set key outside right top box\n"
       << "plot ";
     for (size_t i = 0; i < channels.size(); i++) {
