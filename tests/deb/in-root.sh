@@ -51,8 +51,9 @@ cat >/tmp/halrun.expected <<'OUT'
 1 1 
 1 1 
 Component Pins:
-Owner   Type  Dir         Value  Name
-     2  bit   OUT          TRUE  and2.0.out ==> out
+Owner  Type  Dir         Value  Name
+    2  bit   OUT          TRUE  and2.0.out ==> out
+
 OUT
 check "halrun of a small file (user in group hal)" diff -u /tmp/halrun.expected /tmp/halrun.out
 
@@ -100,6 +101,8 @@ COMP
 check "pkg-config --cflags hal" sh -c 'pkg-config --cflags hal | grep -q -- "-I/usr/include/hal"'
 check "out-of-tree component built with pkg-config" sh -c 'gcc -shared -fPIC -Wall -Werror $(pkg-config --cflags hal) twice.c -o twice.so'
 check "comp --compile of a .comp" comp --compile gain3.comp
+check "comp --install of a .comp" comp --install gain3.comp
+check "installing the pkg-config-built module" install -m 644 twice.so /usr/lib/hal/rtlib/
 cat >ext.hal <<'HAL'
 loadrt twice
 loadrt gain3
@@ -114,7 +117,7 @@ getp twice.out
 getp gain3.0.out
 HAL
 chown -R tester /tmp/ext
-check "both load and run" sh -c 'runuser -u tester -- env HAL_FLAVOR=sim HAL_RTLIB_DIR=/tmp/ext halrun /tmp/ext/ext.hal >/tmp/ext.out 2>&1; printf "3\n6\n" | diff -u - /tmp/ext.out'
+check "both load and run" sh -c 'runuser -u tester -- env HAL_FLAVOR=sim halrun /tmp/ext/ext.hal >/tmp/ext.out 2>&1; printf "3\n6\n" | diff -u - /tmp/ext.out'
 
 # DKMS: the postinst built and installed the modules for both kernels
 nmods=$(( $(awk '!/^[ \t]*(#|$)/' /usr/src/hal-$version/modules.manifest | wc -l) + 2 ))
