@@ -63,6 +63,9 @@ echo "== building modules for $kver"
 make -s -f "$root/kernel/Makefile.kmod" KDIR="$kdir" KMOD_BUILD="$out/modules" \
 	KMOD_TEST_MODULES="$here/fmt_selftest.c" ${KTEST_MANIFEST:+KMOD_MANIFEST="$KTEST_MANIFEST"} ${KMOD_CFLAGS:+KCFLAGS="$KMOD_CFLAGS"} >"$out.build.log" 2>&1 ||
 	{ mkdir -p "$out"; cat "$out.build.log" >&2; exit 1; }
+# the FP rule on the machine code: no FP/SIMD register outside *_fp objects
+echo "== checking floating point in the modules (kernel/kmod-fp-check.sh)"
+"$root/kernel/kmod-fp-check.sh" "$out/modules" || exit 1
 
 [ -n "${KTEST_STATIC_READY:-}" ] || build_static
 
