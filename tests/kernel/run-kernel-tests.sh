@@ -61,7 +61,7 @@ mkdir -p "$out"
 echo "== building modules for $kver"
 # KTEST_MANIFEST: build and test only the modules listed there (default: all)
 make -s -f "$root/kernel/Makefile.kmod" KDIR="$kdir" KMOD_BUILD="$out/modules" \
-	KMOD_TEST_MODULES="$here/fmt_selftest.c" ${KTEST_MANIFEST:+KMOD_MANIFEST="$KTEST_MANIFEST"} ${KMOD_CFLAGS:+KCFLAGS="$KMOD_CFLAGS"} >"$out.build.log" 2>&1 ||
+	KMOD_TEST_MODULES="$here/fmt_selftest.c $here/rtapi_conformance.c" ${KTEST_MANIFEST:+KMOD_MANIFEST="$KTEST_MANIFEST"} ${KMOD_CFLAGS:+KCFLAGS="$KMOD_CFLAGS"} >"$out.build.log" 2>&1 ||
 	{ mkdir -p "$out"; cat "$out.build.log" >&2; exit 1; }
 # the FP rule on the machine code: no FP/SIMD register outside *_fp objects
 echo "== checking floating point in the modules (kernel/kmod-fp-check.sh)"
