@@ -88,12 +88,15 @@ static long settle(struct counter *c)
 		}								\
 	} while (0)
 
+/* uses_fp for every other task id: pausing and waiting inside an FPU section too */
 static int new_task(void (*code)(void *), struct counter *c)
 {
+	static int n;
+
 	c->cycles = 0;
 	c->self = 0;
 	c->pause_now = 0;
-	return rtapi_task_new(code, c, rtapi_prio_highest(), 0, 0);
+	return rtapi_task_new(code, c, rtapi_prio_highest(), 0, n++ & 1);
 }
 
 static int case_new_task_is_paused(char *why, int why_len)
