@@ -44,6 +44,7 @@ kmod: configure
 
 kernel-test: build
 	KERNEL_TEST_RT=1 scripts/kernel-test-deps
+	tests/kernel/fp-check-test.sh
 	tests/kernel/run-kernel-tests.sh \
 		$$(ls -d /usr/src/linux-headers-*-amd64 | sed 's|.*/linux-headers-||' | grep -v -- -rt- | sort -V | tail -1) \
 		$$(ls -d /usr/src/linux-headers-*-rt-amd64 | sed 's|.*/linux-headers-||' | sort -V | tail -1)

@@ -15,12 +15,10 @@
 #include "pid_core.h"
 #include "pid_pins.h"
 #include "at_pid_core.h"
+#include "at_pid_fp.h"
 
 MODULE_LICENSE("GPL");
 MODULE_DESCRIPTION("PID controller with auto tuning");
-
-#define AT_PID_MAX 16
-#define AT_PID_DEFAULT 3
 
 static int num_chan = -1;	/* -1: not given */
 RTAPI_MP_INT(num_chan, "number of PID loops, 1..16 (default 3)");
@@ -29,65 +27,7 @@ RTAPI_MP_ARRAY_STRING(names, AT_PID_MAX, "names of the PID loops (instead of num
 static int debug;
 RTAPI_MP_INT(debug, "1: export errorI, errorD, commandD, commandDD, ultimate-gain, ultimate-period");
 
-struct at_pid {			/* in hal_malloc() memory, one per loop */
-	struct pid_pins pins;
-	hal_bit_t *tune_mode;	/* in */
-	hal_bit_t *tune_start;	/* io: cleared by do-pid-calcs when tuning ends */
-	hal_float_t *ultimate_gain, *ultimate_period;	/* out, debug=1 only */
-	hal_u32_t tune_type, tune_cycles;	/* params, written by halcmd */
-	hal_float_t tune_effort;
-	struct pid_state st;	/* private to do-pid-calcs() */
-	struct at_pid_tune tune;	/* private to do-pid-calcs() */
-};
-
 static int comp_id;
-
-static void at_pid_write_gains(const struct pid_pins *p, const struct pid_gains *g)
-{
-	*p->Pgain = g->Pgain;
-	*p->Igain = g->Igain;
-	*p->Dgain = g->Dgain;
-	*p->FF1 = g->FF1;
-}
-
-static void at_pid_do_calcs(void *arg, long period_ns)
-{
-	struct at_pid *a = arg;
-	struct at_pid_tune_cfg c;
-	struct pid_gains g;
-	struct pid_in in;
-	struct pid_out o;
-	double relay = 0.0;
-	enum at_pid_tune_result r;
-
-	pid_pins_read(&a->pins, &g, &in);
-	c.tune_mode = *a->tune_mode;
-	c.tune_start = *a->tune_start;
-	c.tune_type = a->tune_type;
-	c.tune_cycles = a->tune_cycles;
-	c.tune_effort = a->tune_effort;
-	r = at_pid_tune_step(&a->tune, &c, in.enable, in.command - in.feedback, period_ns,
-			     &g, &relay);
-	if (r == AT_PID_RELAY || r == AT_PID_DONE) {
-		*a->pins.error = in.command - in.feedback;
-		*a->pins.output = relay;
-		a->st.primed = false;	/* restart the loop from scratch after tuning */
-		a->st.errorI = 0.0;
-		if (r == AT_PID_DONE) {
-			at_pid_write_gains(&a->pins, &g);
-			*a->tune_start = false;
-		}
-	} else {
-		if (r == AT_PID_ABORTED)
-			*a->tune_start = false;
-		pid_step(&a->st, &g, &in, period_ns, &o);
-		pid_pins_write(&a->pins, &o);
-	}
-	if (a->ultimate_gain) {
-		*a->ultimate_gain = a->tune.ultimate_gain;
-		*a->ultimate_period = a->tune.ultimate_period;
-	}
-}
 
 static int at_pid_export(struct at_pid *a, const char *prefix)
 {

@@ -12,34 +12,13 @@
 #include "rtapi_app.h"
 #include "hal.h"
 #include "encoder_core.h"
+#include "counter_fp.h"
 
 MODULE_LICENSE("GPL");
 MODULE_DESCRIPTION("pulse counter (deprecated, use encoder counter-mode)");
 
-#define COUNTER_MAX 8
-#define FLOAT_ONE_BITS 0x3ff0000000000000ULL	/* 1.0, stored without FP at init */
-
 static int num_chan = 1;
 RTAPI_MP_INT(num_chan, "number of counters, 1..8");
-
-struct counter_chan {		/* in hal_malloc() memory */
-	hal_bit_t *phase_a, *phase_z;	/* in */
-	hal_bit_t *index_enable;	/* io: cleared by capture-position on the index */
-	hal_bit_t *reset;	/* io, read by capture-position */
-	hal_s32_t *counts;	/* out, written by capture-position */
-	hal_float_t *position, *velocity;	/* out, written by capture-position */
-	hal_float_t scale;	/* param rw */
-	hal_s32_t rawcounts;	/* param ro, written by update-counters */
-	struct enc_update_state up;	/* private to update-counters */
-	struct enc_shared shared;	/* update-counters -> capture-position */
-	struct enc_acks acks;	/* capture-position -> update-counters */
-	struct enc_capture_state cap;	/* private to capture-position */
-};
-
-struct counter_set {		/* in hal_malloc() memory: the functions' argument */
-	int num;
-	struct counter_chan chan[];
-};
 
 static int comp_id;
 
@@ -56,33 +35,6 @@ static void counter_update_counters(void *arg, long period_ns)
 		in.z = *c->phase_z;
 		in.index_enable = *c->index_enable;
 		c->rawcounts = enc_update(&c->up, &c->shared, &c->acks, &in, period_ns);
-	}
-}
-
-static void counter_capture_position(void *arg, long period_ns)
-{
-	struct counter_set *set = arg;
-	struct enc_capture_in in;
-	struct enc_capture_out o;
-	struct enc_shared snap;
-	double mag;
-	int i;
-
-	for (i = 0; i < set->num; i++) {
-		struct counter_chan *c = &set->chan[i];
-
-		enc_shared_read(&c->shared, &snap);
-		in.reset = *c->reset;
-		in.index_enable = *c->index_enable;
-		in.scale = c->scale;
-		mag = c->scale < 0.0 ? -c->scale : c->scale;
-		in.min_speed = mag > 1e-20 ? 1.0 / mag : 1.0;	/* one count per second */
-		enc_capture(&c->cap, &snap, &c->acks, &in, &o);
-		if (o.clear_index_enable)
-			*c->index_enable = false;
-		*c->counts = o.counts;
-		*c->position = o.position;
-		*c->velocity = o.velocity;
 	}
 }
 

@@ -16,40 +16,15 @@
 #include "comp_setup.h"
 #include "instance_names.h"
 #include "encoder_core.h"
+#include "encoder_fp.h"
 
 MODULE_LICENSE("GPL");
 MODULE_DESCRIPTION("software quadrature encoder counter");
-
-#define ENCODER_MAX 8		/* encoder(9): a maximum of eight channels */
-#define ENCODER_DEFAULT 3	/* encoder(9): with neither num_chan= nor names= */
-#define FLOAT_ONE_BITS 0x3ff0000000000000ULL	/* 1.0, stored without FP at init */
 
 static int num_chan = -1;	/* -1: not given */
 RTAPI_MP_INT(num_chan, "number of encoder channels, 1..8 (default 3)");
 static char *names[ENCODER_MAX];
 RTAPI_MP_ARRAY_STRING(names, ENCODER_MAX, "names of the encoder channels (instead of num_chan)");
-
-struct encoder_chan {		/* in hal_malloc() memory */
-	hal_bit_t *phase_a, *phase_b, *phase_z, *reset;	/* in */
-	hal_bit_t *latch_input, *latch_rising, *latch_falling;	/* in */
-	hal_s32_t *missing_teeth;	/* in */
-	hal_float_t *min_speed;	/* in */
-	hal_bit_t *index_enable;	/* io: cleared by capture-position on the index */
-	hal_bit_t *counter_mode, *x4_mode;	/* io, read by update-counters */
-	hal_float_t *scale;	/* io, read by capture-position */
-	hal_s32_t *rawcounts;	/* out, written by update-counters */
-	hal_s32_t *counts, *counts_latched;	/* out, written by capture-position */
-	hal_float_t *position, *position_interpolated, *position_latched, *velocity;
-	struct enc_update_state up;	/* private to update-counters */
-	struct enc_shared shared;	/* update-counters -> capture-position */
-	struct enc_acks acks;	/* capture-position -> update-counters */
-	struct enc_capture_state cap;	/* private to capture-position */
-};
-
-struct encoder_set {		/* in hal_malloc() memory: the functions' argument */
-	int num;
-	struct encoder_chan chan[];
-};
 
 static int comp_id;
 
@@ -73,34 +48,6 @@ static void encoder_update_counters(void *arg, long period_ns)
 		in.x4_mode = *e->x4_mode;
 		in.missing_teeth = *e->missing_teeth;
 		*e->rawcounts = enc_update(&e->up, &e->shared, &e->acks, &in, period_ns);
-	}
-}
-
-static void encoder_capture_position(void *arg, long period_ns)
-{
-	struct encoder_set *set = arg;
-	struct enc_capture_in in;
-	struct enc_capture_out o;
-	struct enc_shared snap;
-	int i;
-
-	for (i = 0; i < set->num; i++) {
-		struct encoder_chan *e = &set->chan[i];
-
-		enc_shared_read(&e->shared, &snap);
-		in.reset = *e->reset;
-		in.index_enable = *e->index_enable;
-		in.scale = *e->scale;
-		in.min_speed = *e->min_speed;
-		enc_capture(&e->cap, &snap, &e->acks, &in, &o);
-		if (o.clear_index_enable)
-			*e->index_enable = false;
-		*e->counts = o.counts;
-		*e->counts_latched = o.counts_latched;
-		*e->position = o.position;
-		*e->position_interpolated = o.position_interpolated;
-		*e->position_latched = o.position_latched;
-		*e->velocity = o.velocity;
 	}
 }
 

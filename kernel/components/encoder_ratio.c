@@ -12,29 +12,15 @@
 #include "comp_setup.h"
 #include "instance_names.h"
 #include "encoder_ratio_core.h"
+#include "encoder_ratio_fp.h"
 
 MODULE_LICENSE("GPL");
 MODULE_DESCRIPTION("electronic gear between two encoders");
-
-#define ENCODER_RATIO_MAX 8	/* encoder_ratio(9): up to eight axis pairs */
 
 static int num_chan = -1;	/* -1: not given (one pair, unless names= is) */
 RTAPI_MP_INT(num_chan, "number of axis pairs, 1..8");
 static char *names[ENCODER_RATIO_MAX];
 RTAPI_MP_ARRAY_STRING(names, ENCODER_RATIO_MAX, "names of the axis pairs (instead of num_chan)");
-
-struct encoder_ratio_chan {	/* in hal_malloc() memory */
-	hal_bit_t *master_a, *master_b, *slave_a, *slave_b, *enable;	/* in, read by sample */
-	hal_float_t *error;	/* out, written by update */
-	hal_u32_t master_ppr, slave_ppr, master_teeth, slave_teeth;	/* params, read by update */
-	struct enc_ratio_state st;	/* private to sample */
-	struct enc_ratio_counts counts;	/* sample -> update */
-};
-
-struct encoder_ratio_set {	/* in hal_malloc() memory: the functions' argument */
-	int num;
-	struct encoder_ratio_chan chan[];
-};
 
 static int comp_id;
 
@@ -48,19 +34,6 @@ static void encoder_ratio_sample(void *arg, long period_ns)
 
 		enc_ratio_sample(&c->st, &c->counts, *c->master_a, *c->master_b, *c->slave_a,
 				 *c->slave_b, *c->enable);
-	}
-}
-
-static void encoder_ratio_update(void *arg, long period_ns)
-{
-	struct encoder_ratio_set *set = arg;
-	int i;
-
-	for (i = 0; i < set->num; i++) {
-		struct encoder_ratio_chan *c = &set->chan[i];
-
-		*c->error = enc_ratio_error(&c->counts, c->master_ppr, c->slave_ppr, c->master_teeth,
-					    c->slave_teeth);
 	}
 }
 

@@ -12,34 +12,13 @@
 #include "comp_setup.h"
 #include "stepgen_core.h"
 #include "stepgen_loop.h"
+#include "freqgen_fp.h"
 
 MODULE_LICENSE("GPL");
 MODULE_DESCRIPTION("software step pulse generation by velocity (obsolete)");
 
 static int step_type[STEPGEN_MAX_CHAN] = { -1, -1, -1, -1, -1, -1, -1, -1 };
 RTAPI_MP_ARRAY_INT(step_type, STEPGEN_MAX_CHAN, "step type of each generator, 0..14");
-
-struct freqgen_chan {		/* in hal_malloc() memory */
-	int type;
-	hal_float_t *velocity;	/* read by update-freq */
-	hal_s32_t *counts;	/* written by capture-position */
-	hal_float_t *position_fb;	/* written by capture-position */
-	hal_bit_t *out[STEPGEN_MAX_PHASES];
-	int num_out;
-	hal_float_t frequency;	/* RO: written by update-freq */
-	hal_float_t maxaccel, maxfreq, position_scale, velocity_scale;	/* RW */
-	hal_s32_t rawcounts;	/* RO: written by make-pulses */
-	hal_u32_t steplen, stepspace, dirsetup, dirhold;	/* periods, RW */
-	struct stepgen_timing timing;	/* written by update-freq */
-	struct stepgen_pulse pulse;
-	struct stepgen_loop loop;	/* update-freq; vel in steps/s */
-};
-
-struct freqgen_comp {
-	hal_u32_t base_period_ns;	/* written by make-pulses */
-	int num_chan;
-	struct freqgen_chan chan[STEPGEN_MAX_CHAN];
-};
 
 static int comp_id;
 
@@ -58,59 +37,6 @@ static void make_pulses(void *arg, long period_ns)
 		ch->rawcounts = ch->pulse.rawcount;
 		for (i = 0; i < ch->num_out; i++)
 			*ch->out[i] = ch->pulse.out[i];
-	}
-}
-
-static void update_freq(void *arg, long period_ns)
-{
-	struct freqgen_comp *c = arg;
-	rtapi_u32 base_ns = c->base_period_ns;
-	int n;
-
-	for (n = 0; n < c->num_chan; n++) {
-		struct freqgen_chan *ch = &c->chan[n];
-		struct stepgen_timing *t = &ch->timing;
-		double flimit, fmax, f;
-		rtapi_s64 addval;
-
-		if (base_ns == 0)
-			continue;
-		if (ch->type == 0) {	/* the page's units: whole make-pulses periods */
-			t->steplen = ch->steplen ? ch->steplen : 1;
-			t->stepspace = ch->stepspace;
-			t->dirsetup = ch->dirsetup;
-			t->dirhold = ch->dirhold;
-		}
-		flimit = stepgen_max_freq(ch->type, t, base_ns);
-		if (!(ch->maxfreq >= 0.0))
-			ch->maxfreq = 0.0;
-		if (ch->maxfreq > flimit)
-			ch->maxfreq = flimit;
-		fmax = ch->maxfreq > 0.0 ? ch->maxfreq : flimit;
-		if (!(ch->maxaccel >= 0.0))
-			ch->maxaccel = 0.0;
-		f = stepgen_velocity_loop(&ch->loop, *ch->velocity * ch->velocity_scale, fmax,
-					  ch->maxaccel, period_ns * 1e-9);
-		addval = stepgen_freq_to_addval(f, base_ns);
-		rtapi_store_u64(&ch->pulse.addval, (rtapi_u64)addval);
-		ch->frequency = stepgen_addval_to_freq(addval, base_ns);
-		ch->loop.vel = ch->frequency;
-	}
-}
-
-static void capture_position(void *arg, long period_ns)
-{
-	struct freqgen_comp *c = arg;
-	int n;
-
-	for (n = 0; n < c->num_chan; n++) {
-		struct freqgen_chan *ch = &c->chan[n];
-		double scale = ch->position_scale;
-
-		if (!(fabs(scale) > 1e-20))
-			ch->position_scale = scale = 1.0;
-		*ch->counts = ch->pulse.rawcount;
-		*ch->position_fb = stepgen_accum_to_steps(rtapi_load_u64(&ch->pulse.accum)) / scale;
 	}
 }
 
@@ -160,8 +86,6 @@ static int export_chan(struct freqgen_chan *ch, int n)
 		err = hal_param_u32_newf(HAL_RW, &ch->dirhold, comp_id, "freqgen.%d.dirhold", n);
 	return err;
 }
-
-#define FLOAT_ONE_BITS 0x3ff0000000000000ULL	/* 1.0, set without FP instructions */
 
 int rtapi_app_main(void)
 {

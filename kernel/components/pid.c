@@ -12,12 +12,10 @@
 #include "instance_names.h"
 #include "pid_core.h"
 #include "pid_pins.h"
+#include "pid_fp.h"
 
 MODULE_LICENSE("GPL");
 MODULE_DESCRIPTION("PID controller");
-
-#define PID_MAX 16		/* pid(9): a maximum of sixteen controllers */
-#define PID_DEFAULT 3		/* pid(9): with neither num_chan= nor names= */
 
 static int num_chan = -1;	/* -1: not given */
 RTAPI_MP_INT(num_chan, "number of PID loops, 1..16 (default 3)");
@@ -26,24 +24,7 @@ RTAPI_MP_ARRAY_STRING(names, PID_MAX, "names of the PID loops (instead of num_ch
 static int debug;
 RTAPI_MP_INT(debug, "1: export the errorI, errorD, commandD, commandDD, commandDDD pins");
 
-struct pid_loop {			/* in hal_malloc() memory, one per loop */
-	struct pid_pins pins;
-	struct pid_state st;	/* private to do_pid_calcs() */
-};
-
 static int comp_id;
-
-static void pid_do_calcs(void *arg, long period_ns)
-{
-	struct pid_loop *p = arg;
-	struct pid_gains g;
-	struct pid_in in;
-	struct pid_out o;
-
-	pid_pins_read(&p->pins, &g, &in);
-	pid_step(&p->st, &g, &in, period_ns, &o);
-	pid_pins_write(&p->pins, &o);
-}
 
 static int pid_export(struct pid_loop *p, const char *prefix)
 {

@@ -8,30 +8,13 @@
 #include "hal.h"
 #include "comp_setup.h"
 #include "pwmgen_core.h"
+#include "pwmgen_fp.h"
 
 MODULE_LICENSE("GPL");
 MODULE_DESCRIPTION("software PWM/PDM generation");
 
 static int output_type[PWMGEN_MAX_CHAN] = { -1, -1, -1, -1, -1, -1, -1, -1 };
 RTAPI_MP_ARRAY_INT(output_type, PWMGEN_MAX_CHAN, "output type of each generator, 0..2");
-
-struct pwmgen_chan {		/* in hal_malloc() memory */
-	int type;		/* output type, fixed at load */
-	hal_float_t *value;	/* read by update */
-	hal_bit_t *enable;	/* read by update */
-	hal_bit_t *out[2];	/* pwm [+ dir], or up + down: written by make-pulses */
-	hal_float_t scale, offset, pwm_freq, min_dc, max_dc;	/* RW, read by update */
-	hal_bit_t dither;	/* RW */
-	hal_float_t curr_dc;	/* RO: written by update */
-	struct pwmgen_plan plan;	/* written by update, read by make-pulses */
-	struct pwmgen_pulse pulse;	/* make-pulses */
-};
-
-struct pwmgen_comp {
-	hal_u32_t base_period_ns;	/* written by make-pulses */
-	int num_chan;
-	struct pwmgen_chan chan[PWMGEN_MAX_CHAN];
-};
 
 static int comp_id;
 
@@ -54,33 +37,6 @@ static void make_pulses(void *arg, long period_ns)
 			if (ch->type == 1)
 				*ch->out[1] = rev;	/* dir: high for negative */
 		}
-	}
-}
-
-static void update(void *arg, long period_ns)
-{
-	struct pwmgen_comp *c = arg;
-	int n;
-
-	for (n = 0; n < c->num_chan; n++) {
-		struct pwmgen_chan *ch = &c->chan[n];
-		struct pwmgen_settings s = {
-			.scale = ch->scale, .offset = ch->offset, .pwm_freq = ch->pwm_freq,
-			.min_dc = ch->min_dc, .max_dc = ch->max_dc, .dither = ch->dither,
-			.output_type = ch->type,
-		};
-		struct pwmgen_plan plan = ch->plan;
-
-		ch->curr_dc = pwmgen_plan_update(&plan, &s, *ch->value, *ch->enable,
-						 c->base_period_ns);
-		ch->plan = plan;
-		/* write back only what the page says update corrects */
-		if (s.pwm_freq != ch->pwm_freq)
-			ch->pwm_freq = s.pwm_freq;
-		if (s.min_dc != ch->min_dc)
-			ch->min_dc = s.min_dc;
-		if (s.max_dc != ch->max_dc)
-			ch->max_dc = s.max_dc;
 	}
 }
 
@@ -114,7 +70,6 @@ static int export_chan(struct pwmgen_chan *ch, int n)
 }
 
 /* Defaults as bit patterns: kernel init code runs outside FPU sections. */
-#define FLOAT_ONE_BITS 0x3ff0000000000000ULL	/* 1.0 */
 
 int rtapi_app_main(void)
 {

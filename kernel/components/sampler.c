@@ -10,6 +10,7 @@
 #include "hal.h"
 #include "streamer_fifo.h"
 #include "fifo_module.h"
+#include "sampler_fp.h"
 
 MODULE_LICENSE("GPL");
 MODULE_DESCRIPTION("sample HAL data in real time into a FIFO for halsampler");
@@ -19,70 +20,7 @@ RTAPI_MP_ARRAY_STRING(cfg, HAL_FIFO_MAX_FIFOS, "pin types of each FIFO: f, b, s,
 static int depth[HAL_FIFO_MAX_FIFOS];
 RTAPI_MP_ARRAY_INT(depth, HAL_FIFO_MAX_FIFOS, "samples each FIFO holds");
 
-struct sampler {		/* in hal_malloc() memory, one per FIFO */
-	struct hal_fifo_hdr *hdr;	/* shared memory: sample() is the producer */
-	union hal_fifo_value *data;
-	hal_bit_t *enable;		/* read by sample() */
-	hal_s32_t *curr_depth;		/* written by sample() */
-	hal_bit_t *full;		/* written by sample() */
-	hal_s32_t overruns;		/* param: sample() counts up, setp resets */
-	hal_s32_t sample_num;		/* param: sample() counts up, setp resets */
-	bool gap;			/* private to sample(): a sample was dropped */
-	int num_pins;
-	char type[HAL_FIFO_MAX_PINS];	/* enum hal_fifo_type per pin */
-	union fifo_pin_ptr pins[HAL_FIFO_MAX_PINS];
-};
-
 static struct fifo_module mod = { .name = "sampler" };	/* init/exit only */
-
-static rtapi_s32 next_s32(rtapi_s32 v)
-{
-	return (rtapi_s32)((rtapi_u32)v + 1u);	/* wraps without signed overflow */
-}
-
-/* One sample per call: drop it (counting an overrun) when the FIFO is full, and
- * flag the next stored sample so halsampler can print "overrun" at the gap. */
-static void sample(void *arg, long period_ns)
-{
-	struct sampler *s = arg;
-	union hal_fifo_value *rec;
-	rtapi_u32 used;
-	int m;
-
-	if (*s->enable) {
-		rec = hal_fifo_write_slot(s->hdr, s->data);
-		if (!rec) {
-			s->overruns = next_s32(s->overruns);
-			s->gap = true;
-		} else {
-			rec[HAL_FIFO_REC_SAMPLE].s = s->sample_num;
-			rec[HAL_FIFO_REC_FLAGS].u = s->gap ? HAL_FIFO_GAP : 0;
-			rec += HAL_FIFO_REC_HDR_WORDS;
-			for (m = 0; m < s->num_pins; m++) {
-				switch (s->type[m]) {
-				case HAL_FIFO_FLOAT:
-					rec[m].f = *s->pins[m].f;
-					break;
-				case HAL_FIFO_BIT:
-					rec[m].u = *s->pins[m].b ? 1 : 0;
-					break;
-				case HAL_FIFO_S32:
-					rec[m].s = *s->pins[m].s;
-					break;
-				default:
-					rec[m].u = *s->pins[m].u;
-					break;
-				}
-			}
-			hal_fifo_write_done(s->hdr);
-			s->gap = false;
-		}
-		s->sample_num = next_s32(s->sample_num);
-	}
-	used = hal_fifo_used(s->hdr);
-	*s->curr_depth = (hal_s32_t)used;
-	*s->full = used >= s->hdr->depth;
-}
 
 static int sampler_export(struct fifo_module *fm, void *mem, int n)
 {

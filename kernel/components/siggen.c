@@ -10,43 +10,20 @@
 #include "comp_setup.h"
 #include "instance_names.h"
 #include "siggen_core.h"
+#include "siggen_fp.h"
 
 MODULE_LICENSE("GPL");
 MODULE_DESCRIPTION("signal generator");
-
-#define SIGGEN_MAX 16		/* siggen(9): a maximum of sixteen channels */
 
 static int num_chan = -1;	/* -1: not given (one channel, unless names= is) */
 RTAPI_MP_INT(num_chan, "number of signal generators, 1..16");
 static char *names[SIGGEN_MAX];
 RTAPI_MP_ARRAY_STRING(names, SIGGEN_MAX, "names of the signal generators (instead of num_chan)");
 
-struct siggen {			/* in hal_malloc() memory, one per generator */
-	hal_float_t *frequency, *amplitude, *offset;	/* inputs, read by update() */
-	hal_float_t *sine, *cosine, *triangle, *sawtooth, *square;	/* written by update() */
-	hal_bit_t *clock;	/* written by update() */
-	struct siggen_state st;	/* private to update() */
-};
-
 static int comp_id;
-
-static void siggen_update(void *arg, long period_ns)
-{
-	struct siggen *g = arg;
-	struct siggen_out o;
-
-	siggen_step(&g->st, *g->frequency, *g->amplitude, *g->offset, period_ns, &o);
-	*g->sine = o.sine;
-	*g->cosine = o.cosine;
-	*g->triangle = o.triangle;
-	*g->sawtooth = o.sawtooth;
-	*g->square = o.square;
-	*g->clock = o.clock;
-}
 
 /* Init code runs outside kernel_fpu_begin/end in the kernel flavor, so the
  * defaults are stored as IEEE-754 bit patterns, without touching FP registers. */
-#define FLOAT_ONE_BITS 0x3ff0000000000000ULL	/* 1.0 */
 
 static void set_float_bits(hal_float_t *p, rtapi_u64 bits)
 {

@@ -12,31 +12,15 @@
 #include "comp_setup.h"
 #include "instance_names.h"
 #include "sim_encoder_core.h"
+#include "sim_encoder_fp.h"
 
 MODULE_LICENSE("GPL");
 MODULE_DESCRIPTION("simulated quadrature encoder");
-
-#define SIM_ENCODER_MAX 8
-#define FLOAT_ONE_BITS 0x3ff0000000000000ULL	/* 1.0, stored without FP at init */
 
 static int num_chan = -1;	/* -1: not given (one channel, unless names= is) */
 RTAPI_MP_INT(num_chan, "number of simulated encoders, 1..8");
 static char *names[SIM_ENCODER_MAX];
 RTAPI_MP_ARRAY_STRING(names, SIM_ENCODER_MAX, "names of the simulated encoders (instead of num_chan)");
-
-struct sim_encoder_chan {	/* in hal_malloc() memory */
-	hal_bit_t *phase_a, *phase_b, *phase_z;	/* out, written by make-pulses */
-	hal_float_t *speed;	/* in, read by update-speed */
-	hal_u32_t ppr;		/* param rw, read by update-speed */
-	hal_float_t scale;	/* param rw, read by update-speed */
-	struct sim_enc_shared shared;	/* update-speed <-> make-pulses */
-	struct sim_enc_state st;	/* private to make-pulses */
-};
-
-struct sim_encoder_set {	/* in hal_malloc() memory: the functions' argument */
-	int num;
-	struct sim_encoder_chan chan[];
-};
 
 static int comp_id;
 
@@ -53,18 +37,6 @@ static void sim_encoder_make_pulses(void *arg, long period_ns)
 		*c->phase_a = o.a;
 		*c->phase_b = o.b;
 		*c->phase_z = o.z;
-	}
-}
-
-static void sim_encoder_update_speed(void *arg, long period_ns)
-{
-	struct sim_encoder_set *set = arg;
-	int i;
-
-	for (i = 0; i < set->num; i++) {
-		struct sim_encoder_chan *c = &set->chan[i];
-
-		sim_enc_update_speed(&c->shared, *c->speed, c->scale, c->ppr, period_ns);
 	}
 }
 

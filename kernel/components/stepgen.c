@@ -12,6 +12,7 @@
 #include "comp_setup.h"
 #include "stepgen_core.h"
 #include "stepgen_loop.h"
+#include "stepgen_fp.h"
 
 MODULE_LICENSE("GPL");
 MODULE_DESCRIPTION("software step pulse generation");
@@ -23,32 +24,6 @@ RTAPI_MP_ARRAY_STRING(ctrl_type, STEPGEN_MAX_CHAN, "p (position) or v (velocity)
 static int user_step_type[STEPGEN_MAX_CYCLE] = { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 };
 RTAPI_MP_ARRAY_INT(user_step_type, STEPGEN_MAX_CYCLE,
 		   "phase bits of each state of step type 15, up to 10 states of 5 phases");
-
-struct stepgen_chan {		/* in hal_malloc() memory */
-	int type;		/* step type, fixed at load */
-	bool velocity_mode;	/* ctrl_type v */
-	const struct stepgen_pattern *pat;	/* types 2-15 */
-	hal_float_t *cmd;	/* position-cmd or velocity-cmd: read by update-freq */
-	hal_bit_t *enable;	/* read by make-pulses and update-freq */
-	hal_s32_t *counts;	/* written by capture-position */
-	hal_float_t *position_fb;	/* written by capture-position */
-	hal_bit_t *out[STEPGEN_MAX_PHASES];	/* step/dir, up/down or phase-A..E */
-	int num_out;
-	hal_float_t position_scale, maxvel, maxaccel;	/* RW params, read by update-freq */
-	hal_float_t frequency;	/* RO param: written by update-freq */
-	hal_u32_t steplen, stepspace, dirsetup, dirhold, dirdelay;	/* ns, RW */
-	hal_s32_t rawcounts;	/* RO param: written by make-pulses */
-	struct stepgen_timing timing;	/* periods: written by update-freq */
-	struct stepgen_pulse pulse;	/* make-pulses (addval: update-freq) */
-	struct stepgen_loop loop;	/* update-freq */
-};
-
-struct stepgen_comp {
-	hal_u32_t base_period_ns;	/* make-pulses period: written by make-pulses */
-	int num_chan;
-	struct stepgen_pattern user_pat;	/* type 15 */
-	struct stepgen_chan chan[STEPGEN_MAX_CHAN];
-};
 
 static int comp_id;
 
@@ -65,88 +40,6 @@ static void make_pulses(void *arg, long period_ns)
 		ch->rawcounts = ch->pulse.rawcount;
 		for (i = 0; i < ch->num_out; i++)
 			*ch->out[i] = ch->pulse.out[i];
-	}
-}
-
-/* Position-scale 0 (or NaN) would divide by zero: use 1.0, as the default. */
-static double usable_scale(struct stepgen_chan *ch)
-{
-	double s = ch->position_scale;
-
-	if (!(fabs(s) > 1e-20)) {
-		ch->position_scale = 1.0;
-		s = 1.0;
-	}
-	return s;
-}
-
-static void update_timing(struct stepgen_chan *ch, rtapi_u32 base_ns)
-{
-	struct stepgen_timing *t = &ch->timing;
-
-	t->steplen = stepgen_ns_to_periods(ch->steplen, base_ns);
-	if (t->steplen == 0)
-		t->steplen = 1;		/* a step pin must be high for at least one period */
-	t->stepspace = stepgen_ns_to_periods(ch->stepspace, base_ns);
-	t->dirsetup = stepgen_ns_to_periods(ch->dirsetup, base_ns);
-	t->dirhold = stepgen_ns_to_periods(ch->dirhold, base_ns);
-	t->dirdelay = stepgen_ns_to_periods(ch->dirdelay, base_ns);
-}
-
-static void update_freq(void *arg, long period_ns)
-{
-	struct stepgen_comp *c = arg;
-	rtapi_u32 base_ns = c->base_period_ns;
-	double t = period_ns * 1e-9;
-	int n;
-
-	for (n = 0; n < c->num_chan; n++) {
-		struct stepgen_chan *ch = &c->chan[n];
-		double scale = usable_scale(ch);
-		double vlimit, vmax, amax, pos, v;
-		rtapi_s64 addval;
-
-		if (base_ns == 0 || !*ch->enable) {	/* make-pulses has not run yet, or off */
-			rtapi_store_u64(&ch->pulse.addval, 0);
-			ch->loop.vel = 0.0;
-			ch->loop.has_old = false;
-			ch->frequency = 0.0;
-			continue;
-		}
-		update_timing(ch, base_ns);
-		vlimit = stepgen_max_freq(ch->type, &ch->timing, base_ns) / fabs(scale);
-		if (!(ch->maxvel >= 0.0))
-			ch->maxvel = 0.0;
-		if (ch->maxvel > vlimit)
-			ch->maxvel = vlimit;	/* "reset to the highest attainable value" */
-		vmax = ch->maxvel > 0.0 ? ch->maxvel : vlimit;
-		if (!(ch->maxaccel >= 0.0))
-			ch->maxaccel = 0.0;
-		amax = ch->maxaccel;
-		if (ch->velocity_mode) {
-			v = stepgen_velocity_loop(&ch->loop, *ch->cmd, vmax, amax, t);
-		} else {
-			pos = stepgen_accum_to_steps(rtapi_load_u64(&ch->pulse.accum)) / scale;
-			v = stepgen_position_loop(&ch->loop, *ch->cmd, pos, vmax, amax, t);
-		}
-		addval = stepgen_freq_to_addval(v * scale, base_ns);
-		rtapi_store_u64(&ch->pulse.addval, (rtapi_u64)addval);
-		ch->frequency = stepgen_addval_to_freq(addval, base_ns);
-		ch->loop.vel = ch->frequency / scale;	/* what is really output */
-	}
-}
-
-static void capture_position(void *arg, long period_ns)
-{
-	struct stepgen_comp *c = arg;
-	int n;
-
-	for (n = 0; n < c->num_chan; n++) {
-		struct stepgen_chan *ch = &c->chan[n];
-
-		*ch->counts = ch->pulse.rawcount;
-		*ch->position_fb = stepgen_accum_to_steps(rtapi_load_u64(&ch->pulse.accum)) /
-				   usable_scale(ch);
 	}
 }
 
@@ -199,7 +92,6 @@ static int export_chan(struct stepgen_comp *c, int n)
 }
 
 /* Defaults without FP instructions: kernel init code runs outside FPU sections. */
-#define FLOAT_ONE_BITS 0x3ff0000000000000ULL	/* 1.0 */
 
 static void init_chan(struct stepgen_comp *c, int n, int type, bool velocity_mode)
 {

@@ -10,6 +10,7 @@
 #include "hal.h"
 #include "streamer_fifo.h"
 #include "fifo_module.h"
+#include "streamer_fp.h"
 
 MODULE_LICENSE("GPL");
 MODULE_DESCRIPTION("stream data from halstreamer into HAL in real time");
@@ -19,58 +20,7 @@ RTAPI_MP_ARRAY_STRING(cfg, HAL_FIFO_MAX_FIFOS, "pin types of each FIFO: f, b, s,
 static int depth[HAL_FIFO_MAX_FIFOS];
 RTAPI_MP_ARRAY_INT(depth, HAL_FIFO_MAX_FIFOS, "samples each FIFO holds");
 
-struct streamer {		/* in hal_malloc() memory, one per FIFO */
-	struct hal_fifo_hdr *hdr;	/* shared memory: update() is the consumer */
-	union hal_fifo_value *data;
-	hal_s32_t *curr_depth;		/* written by update() */
-	hal_bit_t *empty;		/* written by update() */
-	hal_bit_t *enable;		/* read by update() */
-	hal_s32_t *underruns;		/* I/O pin: update() counts up, setp resets */
-	int num_pins;
-	char type[HAL_FIFO_MAX_PINS];	/* enum hal_fifo_type per pin */
-	union fifo_pin_ptr pins[HAL_FIFO_MAX_PINS];
-};
-
 static struct fifo_module mod = { .name = "streamer" };	/* init/exit only */
-
-/* One record per call; with none available the pins keep their values and an
- * underrun is counted. */
-static void update(void *arg, long period_ns)
-{
-	struct streamer *s = arg;
-	const union hal_fifo_value *rec;
-	rtapi_u32 used;
-	int m;
-
-	if (*s->enable) {
-		rec = hal_fifo_read_slot(s->hdr, s->data);
-		if (!rec) {
-			*s->underruns = (hal_s32_t)((rtapi_u32)*s->underruns + 1u);
-		} else {
-			rec += HAL_FIFO_REC_HDR_WORDS;
-			for (m = 0; m < s->num_pins; m++) {
-				switch (s->type[m]) {
-				case HAL_FIFO_FLOAT:
-					*s->pins[m].f = rec[m].f;
-					break;
-				case HAL_FIFO_BIT:
-					*s->pins[m].b = rec[m].u != 0;
-					break;
-				case HAL_FIFO_S32:
-					*s->pins[m].s = (hal_s32_t)rec[m].s;
-					break;
-				default:
-					*s->pins[m].u = (rtapi_u32)rec[m].u;
-					break;
-				}
-			}
-			hal_fifo_read_done(s->hdr);
-		}
-	}
-	used = hal_fifo_used(s->hdr);
-	*s->curr_depth = (hal_s32_t)used;
-	*s->empty = used == 0;
-}
 
 static int streamer_export(struct fifo_module *fm, void *mem, int n)
 {

@@ -8,33 +8,15 @@
 #include "rtapi_app.h"
 #include "hal.h"
 #include "comp_setup.h"
+#include "supply_fp.h"
 
 MODULE_LICENSE("GPL");
 MODULE_DESCRIPTION("set output pins from parameters (obsolete)");
 
-#define SUPPLY_MAX_CHAN 8
-
 static int num_chan = 1;
 RTAPI_MP_INT(num_chan, "number of supply channels, 1..8");
 
-struct supply {			/* in hal_malloc() memory */
-	hal_bit_t *q, *q_not;	/* written by update */
-	hal_float_t *variable, *variable_neg;	/* written by update */
-	hal_bit_t d;		/* RW param */
-	hal_float_t value;	/* RW param */
-};
-
 static int comp_id;
-
-static void supply_update(void *arg, long period_ns)
-{
-	struct supply *s = arg;
-
-	*s->q = s->d;
-	*s->q_not = !s->d;
-	*s->variable = s->value;
-	*s->variable_neg = 0.0 - s->value;	/* -1 times value, but 0 stays 0, not -0 */
-}
 
 static int export_supply(struct supply *s, int n)
 {

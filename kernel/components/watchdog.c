@@ -11,53 +11,15 @@
 #include "rtapi.h"
 #include "rtapi_app.h"
 #include "hal.h"
+#include "watchdog_fp.h"
 
 MODULE_LICENSE("GPL");
 MODULE_DESCRIPTION("monitor multiple inputs for a heartbeat");
 
-#define WATCHDOG_MAX_INPUTS 32
-
-static int num_inputs = -1;	/* -1: not given; the page requires it */
+COMP_FP_LOCAL int num_inputs = -1;	/* -1: not given; the page requires it */
 RTAPI_MP_INT(num_inputs, "number of inputs, 1..32");
 
-struct watchdog_input {
-	hal_bit_t *in;
-	hal_float_t *timeout;		/* seconds, read by set-timeouts */
-	rtapi_u64 timeout_ns;		/* written by set-timeouts, read by process (untorn) */
-	rtapi_s64 left_ns;		/* process only: time left for the next transition */
-	hal_bit_t last;			/* process only: level seen in the previous period */
-};
-
-struct watchdog {			/* in hal_malloc() memory */
-	hal_bit_t *enable_in;
-	hal_bit_t *ok_out;		/* written by process only */
-	rtapi_u32 restarts;		/* written by set-timeouts: enable-in rising edges seen */
-	rtapi_u32 restarts_seen;	/* process only */
-	hal_bit_t last_enable;		/* set-timeouts only */
-	hal_bit_t fault;		/* process only: a timeout, or never started */
-	struct watchdog_input input[WATCHDOG_MAX_INPUTS];
-};
-
 static int comp_id;
-
-static void watchdog_set_timeouts(void *arg, long period)
-{
-	struct watchdog *w = arg;
-	int i;
-
-	for (i = 0; i < num_inputs; i++) {
-		double t = *w->input[i].timeout;
-
-		if (t < 0)		/* the page forbids negative timeouts: treat as 0 */
-			t = 0;
-		if (t > 9e9)		/* ~285 years; keeps the conversion in range */
-			t = 9e9;
-		rtapi_store_u64(&w->input[i].timeout_ns, (rtapi_u64)(t * 1e9));
-	}
-	if (*w->enable_in && !w->last_enable)
-		__atomic_store_n(&w->restarts, w->restarts + 1, __ATOMIC_RELEASE);
-	w->last_enable = *w->enable_in;
-}
 
 static void watchdog_process(void *arg, long period)
 {

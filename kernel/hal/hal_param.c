@@ -1,6 +1,9 @@
 /* SPDX-License-Identifier: GPL-2.0-or-later */
 /* hal_param.c - parameters (hal_param_new(3hal)): creation, removal, and setting
- * a value by name as the owning component would. */
+ * a value by name as the owning component would. Compiled without SSE in the kernel
+ * flavor like all of hal_lib: a float value is copied as its 64 bits, and the one
+ * entry that receives a double in a register, hal_param_float_set, is in
+ * hal_param_fp.c. */
 #include "hal_internal.h"
 
 int hal_param_new_locked(const char *name, hal_type_t type, hal_param_dir_t dir, volatile void *data_addr,
@@ -156,7 +159,7 @@ int hal_param_set(const char *name, hal_type_t type, void *value_addr)
 		data = hal_ptr(param->data_off);
 		switch (type) {
 		case HAL_BIT: *(hal_bit_t *)data = *(int *)value_addr != 0; break;
-		case HAL_FLOAT: *(hal_float_t *)data = *(double *)value_addr; break;
+		case HAL_FLOAT: *(volatile rtapi_u64 *)data = *(rtapi_u64 *)value_addr; break;
 		case HAL_S32: *(hal_s32_t *)data = *(rtapi_s32 *)value_addr; break;
 		default: *(hal_u32_t *)data = *(rtapi_u32 *)value_addr; break;
 		}
@@ -168,11 +171,6 @@ int hal_param_set(const char *name, hal_type_t type, void *value_addr)
 int hal_param_bit_set(const char *name, int value)
 {
 	return hal_param_set(name, HAL_BIT, &value);
-}
-
-int hal_param_float_set(const char *name, double value)
-{
-	return hal_param_set(name, HAL_FLOAT, &value);
 }
 
 int hal_param_u32_set(const char *name, unsigned long value)

@@ -32,6 +32,10 @@
 #define MODULE_SUPPORTED_DEVICE(x)
 #endif
 
+/* A component's FP translation unit (comp's NAME_fp.o, -D__COMP_PART_FP) may declare
+ * module parameters but is linked beside the glue that holds the module's init/exit. */
+#ifndef __COMP_PART_FP_ONLY
+
 /* From hal_host.h, declared here so that rtapi stays below hal in the include order. */
 void hal_set_load_context(const char *module, const char *args);
 int hal_exit_module_comps(const char *module);
@@ -68,5 +72,7 @@ static void __exit rtapi_kmod_app_exit(void)
 
 module_init(rtapi_kmod_app_init);
 module_exit(rtapi_kmod_app_exit);
+
+#endif /* __COMP_PART_FP_ONLY */
 
 #endif /* RTAPI_APP_KMOD_H */

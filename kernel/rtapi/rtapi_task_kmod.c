@@ -1,8 +1,14 @@
 /* SPDX-License-Identifier: GPL-2.0-or-later */
-/* rtapi_task_kmod.c - periodic realtime tasks (rtapi_task_new(3rtapi) and friends) as
+/* rtapi_task_kmod.c - realtime tasks (rtapi_task_new(3rtapi) and friends) as
  * SCHED_FIFO kernel threads waiting on absolute hrtimers. A task that uses floating
  * point runs each period's work inside kernel_fpu_begin/end: the section opens before
- * the task code first runs and after every wake-up, and closes before every sleep. */
+ * the task code first runs and after every wake-up, and closes before every sleep.
+ * States and return codes are those of the simulated flavor (rtapi_task_uspace.c),
+ * as the rtapi_task pages describe them; tests/rtapi_conformance runs the same suite
+ * against both: a new task is paused; rtapi_task_start makes a paused task (new or
+ * paused later) periodic, rtapi_task_resume makes it free-running (rtapi_task_wait
+ * then only yields), either on a task that is not paused is -EBUSY; rtapi_task_pause
+ * pauses any task, the caller itself included (it stops right there). */
 #include <linux/module.h>
 #include <linux/kthread.h>
 #include <linux/sched.h>
@@ -17,10 +23,13 @@
 #define PRIO_LOWEST 1
 #define PRIO_HIGHEST 98		/* 99 is left for the kernel's own watchdogs */
 
+enum task_state { TASK_PAUSED, TASK_PERIODIC, TASK_FREERUN };
+
 struct rtapi_task {
 	bool used;
-	bool started;
-	bool paused;
+	bool released;			/* started or resumed at least once (for the table) */
+	int state;			/* enum task_state; written under rtapi_kmod_lock */
+	int resync;			/* set by start/resume: the next wait is a first release */
 	int uses_fp;
 	int prio;
 	void (*code)(void *);
@@ -38,9 +47,16 @@ int rtapi_prio_highest(void) { return PRIO_HIGHEST; }
 EXPORT_SYMBOL(rtapi_prio_highest);
 int rtapi_prio_lowest(void) { return PRIO_LOWEST; }
 EXPORT_SYMBOL(rtapi_prio_lowest);
-int rtapi_prio_next_higher(int prio) { return prio >= PRIO_HIGHEST ? PRIO_HIGHEST : prio + 1; }
+/* Out-of-range arguments come back in range, as in the simulated flavor. */
+int rtapi_prio_next_higher(int prio)
+{
+	return prio >= PRIO_HIGHEST ? PRIO_HIGHEST : prio < PRIO_LOWEST ? PRIO_LOWEST : prio + 1;
+}
 EXPORT_SYMBOL(rtapi_prio_next_higher);
-int rtapi_prio_next_lower(int prio) { return prio <= PRIO_LOWEST ? PRIO_LOWEST : prio - 1; }
+int rtapi_prio_next_lower(int prio)
+{
+	return prio <= PRIO_LOWEST ? PRIO_LOWEST : prio > PRIO_HIGHEST ? PRIO_HIGHEST : prio - 1;
+}
 EXPORT_SYMBOL(rtapi_prio_next_lower);
 
 static struct rtapi_task *task_of_current(void)
@@ -60,10 +76,30 @@ static struct rtapi_task *task_by_id(int id)	/* lock held */
 	return &tasks[id];
 }
 
+/* Sleeps while the task is paused (outside any FPU section); leaves the thread for
+ * good when rtapi_task_delete asked it to stop. */
+static void wait_while_paused(struct rtapi_task *t)
+{
+	for (;;) {
+		set_current_state(TASK_IDLE);
+		if (kthread_should_stop()) {
+			__set_current_state(TASK_RUNNING);
+			kthread_complete_and_exit(NULL, 0);
+		}
+		if (READ_ONCE(t->state) != TASK_PAUSED)
+			break;
+		schedule();
+	}
+	__set_current_state(TASK_RUNNING);
+}
+
 static int task_thread(void *data)
 {
 	struct rtapi_task *t = data;
 
+	wait_while_paused(t);	/* created paused: start or resume releases it */
+	xchg(&t->resync, 0);
+	t->next = ktime_get();
 	if (t->uses_fp)
 		kernel_fpu_begin();
 	t->code(t->arg);
@@ -80,35 +116,55 @@ static int task_thread(void *data)
 	return 0;
 }
 
-/* Sleeps until the next release (or resume), and leaves the thread for good when
- * rtapi_task_delete asked it to stop: the task code's loop never ends by itself. */
+/* Sleeps until the next release, and leaves the thread for good when rtapi_task_delete
+ * asked it to stop: the task code's loop never ends by itself. A paused task sleeps
+ * until start or resume; the first wait after those returns at once (the first
+ * release); a free-running task only gives way to others. */
 static void task_sleep(struct rtapi_task *t)
 {
-	ktime_t now = ktime_get();
+	bool advanced = false;
 
-	t->next = ktime_add_ns(t->next, t->period_ns);
-	if (ktime_before(t->next, now)) {
-		/* Late: count the releases missed and resume the grid after now. */
-		u64 missed = div64_u64(ktime_to_ns(ktime_sub(now, t->next)), t->period_ns) + 1;
-
-		atomic64_add(missed, &t->overruns);
-		t->next = ktime_add_ns(t->next, missed * t->period_ns);
-	}
 	for (;;) {
+		int state;
+
 		set_current_state(TASK_IDLE);
 		if (kthread_should_stop()) {
 			__set_current_state(TASK_RUNNING);
 			kthread_complete_and_exit(NULL, 0);
 		}
-		if (READ_ONCE(t->paused)) {
+		state = READ_ONCE(t->state);
+		if (state == TASK_PAUSED) {
 			schedule();
 			continue;
+		}
+		if (xchg(&t->resync, 0)) {	/* (re)started: this is the first release */
+			t->next = ktime_get();
+			break;
+		}
+		if (state == TASK_FREERUN) {
+			__set_current_state(TASK_RUNNING);
+			cond_resched();
+			break;
+		}
+		if (!advanced) {
+			ktime_t now = ktime_get();
+
+			advanced = true;
+			t->next = ktime_add_ns(t->next, t->period_ns);
+			if (ktime_before(t->next, now)) {
+				/* Late: count the releases missed and resume the grid after now. */
+				u64 missed = div64_u64(ktime_to_ns(ktime_sub(now, t->next)), t->period_ns) + 1;
+
+				atomic64_add(missed, &t->overruns);
+				t->next = ktime_add_ns(t->next, missed * t->period_ns);
+			}
 		}
 		if (schedule_hrtimeout_range_clock(&t->next, 0, HRTIMER_MODE_ABS,
 						   CLOCK_MONOTONIC) == 0)
 			break;	/* the timer expired: our release */
-		/* woken early (stop, pause or resume): look again */
-		if (ktime_before(t->next, ktime_get()))
+		/* woken early (stop, pause, start or resume): look again */
+		if (ktime_before(t->next, ktime_get()) && READ_ONCE(t->state) == TASK_PERIODIC &&
+		    !READ_ONCE(t->resync))
 			break;
 	}
 	__set_current_state(TASK_RUNNING);
@@ -199,7 +255,14 @@ int rtapi_task_delete(int task_id)
 	t = task_by_id(task_id);
 	if (!t) {
 		mutex_unlock(&rtapi_kmod_lock);
+		rtapi_print_msg(RTAPI_MSG_ERR, "rtapi: rtapi_task_delete(%d): no such task\n", task_id);
 		return -EINVAL;
+	}
+	if (t->thread == current) {
+		mutex_unlock(&rtapi_kmod_lock);
+		rtapi_print_msg(RTAPI_MSG_ERR, "rtapi: rtapi_task_delete(%d): a task cannot delete "
+				"itself\n", task_id);
+		return -EDEADLK;
 	}
 	thread = t->thread;
 	mutex_unlock(&rtapi_kmod_lock);
@@ -216,57 +279,92 @@ int rtapi_task_delete(int task_id)
 }
 EXPORT_SYMBOL(rtapi_task_delete);
 
+/* Releases a paused task into 'state' (lock held). */
+static void release(struct rtapi_task *t, int state)
+{
+	t->released = true;
+	WRITE_ONCE(t->resync, 1);
+	WRITE_ONCE(t->state, state);
+	wake_up_process(t->thread);
+}
+
 int rtapi_task_start(int task_id, unsigned long int period_nsec)
 {
+	long clock = rtapi_clock_set_period(0);
 	struct rtapi_task *t;
 	int rc = 0;
 
 	mutex_lock(&rtapi_kmod_lock);
 	t = task_by_id(task_id);
-	if (!t || t->started || period_nsec == 0) {
+	if (!t) {
 		rc = -EINVAL;
+		rtapi_print_msg(RTAPI_MSG_ERR, "rtapi: rtapi_task_start(%d): no such task\n", task_id);
+	} else if (period_nsec == 0 || period_nsec > 10000000000UL) {
+		rc = -EINVAL;
+		rtapi_print_msg(RTAPI_MSG_ERR, "rtapi: rtapi_task_start(%d): period %lu ns is not "
+				"1..10000000000\n", task_id, period_nsec);
+	} else if (READ_ONCE(t->state) != TASK_PAUSED) {
+		rc = -EBUSY;
+		rtapi_print_msg(RTAPI_MSG_ERR, "rtapi: rtapi_task_start(%d): the task is running, "
+				"pause it first\n", task_id);
 	} else {
+		if (clock > 0 && (long)period_nsec < clock)
+			period_nsec = (unsigned long)clock;	/* nothing runs faster than the clock */
 		t->period_ns = period_nsec;
-		t->next = ktime_get();	/* first release now, then every period */
-		t->started = true;
-		wake_up_process(t->thread);
+		release(t, TASK_PERIODIC);
 	}
 	mutex_unlock(&rtapi_kmod_lock);
 	return rc;
 }
 EXPORT_SYMBOL(rtapi_task_start);
 
-static int set_paused(int task_id, bool paused)
+int rtapi_task_resume(int task_id)
 {
 	struct rtapi_task *t;
 	int rc = 0;
 
 	mutex_lock(&rtapi_kmod_lock);
 	t = task_by_id(task_id);
-	if (!t || !t->started) {
+	if (!t) {
 		rc = -EINVAL;
+		rtapi_print_msg(RTAPI_MSG_ERR, "rtapi: rtapi_task_resume(%d): no such task\n", task_id);
+	} else if (READ_ONCE(t->state) != TASK_PAUSED) {
+		rc = -EBUSY;
+		rtapi_print_msg(RTAPI_MSG_ERR, "rtapi: rtapi_task_resume(%d): the task is not "
+				"paused\n", task_id);
 	} else {
-		WRITE_ONCE(t->paused, paused);
-		if (!paused) {
-			t->next = ktime_get();
-			wake_up_process(t->thread);
-		}
+		release(t, TASK_FREERUN);
 	}
 	mutex_unlock(&rtapi_kmod_lock);
 	return rc;
 }
+EXPORT_SYMBOL(rtapi_task_resume);
 
+/* May be called by the task itself, inside its FPU section: it then stops here until
+ * start or resume (the next rtapi_task_wait is that release's first). */
 int rtapi_task_pause(int task_id)
 {
-	return set_paused(task_id, true);
+	struct rtapi_task *t;
+
+	mutex_lock(&rtapi_kmod_lock);
+	t = task_by_id(task_id);
+	if (t)
+		WRITE_ONCE(t->state, TASK_PAUSED);
+	mutex_unlock(&rtapi_kmod_lock);
+	if (!t) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "rtapi: rtapi_task_pause(%d): no such task\n", task_id);
+		return -EINVAL;
+	}
+	if (t->thread == current) {
+		if (t->uses_fp)
+			kernel_fpu_end();
+		wait_while_paused(t);
+		if (t->uses_fp)
+			kernel_fpu_begin();
+	}
+	return 0;
 }
 EXPORT_SYMBOL(rtapi_task_pause);
-
-int rtapi_task_resume(int task_id)
-{
-	return set_paused(task_id, false);
-}
-EXPORT_SYMBOL(rtapi_task_resume);
 
 int rtapi_task_self(void)
 {
@@ -297,7 +395,9 @@ void rtapi_task_show(struct seq_file *m)
 			continue;
 		seq_printf(m, "%-3d %-7d %-4d %-2d %-12llu %-7s %-12lld %lld\n", id,
 			   task_pid_nr(t->thread), t->prio, t->uses_fp ? 1 : 0, t->period_ns,
-			   !t->started ? "new" : READ_ONCE(t->paused) ? "paused" : "running",
+			   !t->released ? "new" :
+			   READ_ONCE(t->state) == TASK_PAUSED ? "paused" :
+			   READ_ONCE(t->state) == TASK_FREERUN ? "freerun" : "running",
 			   (long long)atomic64_read(&t->cycles),
 			   (long long)atomic64_read(&t->overruns));
 	}

@@ -4,25 +4,15 @@
  * would. x86-64 passes a variadic call's doubles in SSE registers, so this shows
  * that the variadic entries (rtapi_print_entry_kmod.c) see them. The message
  *   fmt_selftest: 1.500 -2.25 1e+100 | 1.500 -2.25 1e+100
- * lands in /proc/rtapi/messages (tests/kernel/cases/04-fp-print.sh). */
+ * lands in /proc/rtapi/messages (tests/kernel/cases/04-fp-print.sh). The task is in
+ * fmt_selftest_fp.c: this file, the init code, is compiled without SSE. */
 #include "rtapi.h"
 #include "rtapi_app.h"
 
 MODULE_LICENSE("GPL");
 
 static int module_id, task_id;
-static volatile double values[3] = { 1.5, -2.25, 1e100 };	/* not constants: real FP args */
-
-static void fmt_task(void *arg)
-{
-	char buf[80];
-
-	rtapi_snprintf(buf, sizeof(buf), "%.3f %g %g", values[0], values[1], values[2]);
-	rtapi_print_msg(RTAPI_MSG_ERR, "fmt_selftest: %s | %.3f %g %g\n", buf, values[0],
-			values[1], values[2]);
-	for (;;)
-		rtapi_task_wait();
-}
+void fmt_task(void *arg);	/* fmt_selftest_fp.c */
 
 int rtapi_app_main(void)
 {

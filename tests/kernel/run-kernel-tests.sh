@@ -61,8 +61,11 @@ mkdir -p "$out"
 echo "== building modules for $kver"
 # KTEST_MANIFEST: build and test only the modules listed there (default: all)
 make -s -f "$root/kernel/Makefile.kmod" KDIR="$kdir" KMOD_BUILD="$out/modules" \
-	KMOD_TEST_MODULES="$here/fmt_selftest.c" ${KTEST_MANIFEST:+KMOD_MANIFEST="$KTEST_MANIFEST"} ${KMOD_CFLAGS:+KCFLAGS="$KMOD_CFLAGS"} >"$out.build.log" 2>&1 ||
+	KMOD_TEST_MODULES="$here/fmt_selftest.c $here/rtapi_conformance.c" ${KTEST_MANIFEST:+KMOD_MANIFEST="$KTEST_MANIFEST"} ${KMOD_CFLAGS:+KCFLAGS="$KMOD_CFLAGS"} >"$out.build.log" 2>&1 ||
 	{ mkdir -p "$out"; cat "$out.build.log" >&2; exit 1; }
+# the FP rule on the machine code: no FP/SIMD register outside *_fp objects
+echo "== checking floating point in the modules (kernel/kmod-fp-check.sh)"
+"$root/kernel/kmod-fp-check.sh" "$out/modules" || exit 1
 
 [ -n "${KTEST_STATIC_READY:-}" ] || build_static
 
@@ -91,6 +94,13 @@ cp "$here/run-hal-tests-vm.sh" "$ird/tests/"
 cc -static -O2 -Wall -I"$root/kernel/rtapi" -I"$root/kernel/hal" \
 	-o "$out/initramfs/tests/hal_segcheck" "$here/hal_segcheck.c"
 cp "$here/init.sh" "$ird/init"
+# Accounts (busybox su): group hal with the member haluser (uid 1000); nobody (65534)
+# is in no group of ours. 06-helper-group makes the helper 4750 root:hal.
+mkdir -p "$ird/etc"
+[ -e "$ird/etc/passwd" ] || printf '%s\n' 'root:x:0:0:root:/:/bin/sh' \
+	'haluser:x:1000:1000:hal member:/tmp:/bin/sh' 'nobody:x:65534:65534:nobody:/:/bin/sh' >"$ird/etc/passwd"
+[ -e "$ird/etc/group" ] || printf '%s\n' 'root:x:0:' 'hal:x:990:haluser' 'haluser:x:1000:' \
+	'nogroup:x:65534:' >"$ird/etc/group"
 cp "$cases"/*.sh "$ird/tests/cases/"
 if [ -n "${KTEST_BENCH:-}" ]; then	# the standard workloads, generated here (bash)
 	gen=$root/bench/gen-workload.sh
@@ -101,7 +111,9 @@ if [ -n "${KTEST_BENCH:-}" ]; then	# the standard workloads, generated here (bas
 	strip -o "$ird/bin/thread_cost" "$static/bin/thread_cost"
 fi
 chmod +x "$ird/init"
-(cd "$ird" && find . | cpio -o -H newc --quiet | gzip -1) >"$out/initramfs.cpio.gz"
+# root's files, writable by root only, whoever builds: the helper uses only such modules
+chmod -R go-w "$ird"
+(cd "$ird" && find . | cpio -o -H newc -R 0:0 --quiet | gzip -1) >"$out/initramfs.cpio.gz"
 
 echo "== booting $kver in qemu (TCG)"
 log=$out/console.log

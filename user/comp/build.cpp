@@ -159,6 +159,10 @@ struct Source {
     std::string module;  // output name: the file's base name
     bool uses_fp = true;
     bool userspace = false;
+    // Kernel flavor: the FP code's own translation unit (FP code only in *_fp objects,
+    // compiled with SSE; the rest without): comp's FP part of the generated file, or
+    // NAME_fp.c beside a hand-written NAME.c. Empty: one object, without SSE.
+    fs::path fp_file;
     std::string compile_args, link_args;
 };
 
@@ -169,6 +173,9 @@ Result<Source> prepare(const std::string& file, const fs::path& dir, bool force_
     if (ends_with(file, ".c")) {
         s.c_file = fs::absolute(file);
         s.userspace = force_userspace;
+        fs::path fp = fs::absolute(file).parent_path() / (s.module + "_fp.c");
+        if (fs::exists(fp))
+            s.fp_file = fp;
         return s;
     }
     auto comp = load_comp(file);
@@ -188,6 +195,8 @@ Result<Source> prepare(const std::string& file, const fs::path& dir, bool force_
     s.c_file = dir / (s.module + ".c");
     if (auto r = write_file(s.c_file, generate_c(*comp)); !r)
         return r.error();
+    if (s.uses_fp && !s.userspace)
+        s.fp_file = s.c_file;  // the same file with -D__COMP_PART_FP (gen_c.cpp)
     return s;
 }
 
@@ -210,6 +219,8 @@ Result<fs::path> compile_sim(const Source& s, const std::string& file, const Pat
     for (const auto& w : words(s.compile_args))
         cmd.push_back(w);
     cmd.insert(cmd.end(), {"-o", out.string(), s.c_file.string()});
+    if (!s.fp_file.empty() && s.fp_file != s.c_file)
+        cmd.push_back(s.fp_file.string());
     if (auto r = run(cmd); !r)
         return Error{-1, file + ": compiling failed"};
     return out;
@@ -247,10 +258,25 @@ Result<fs::path> compile_kernel(const Source& s, const std::string& file, const 
     for (const auto& d : p.include_dirs)
         kb << " -I" << d;
     kb << " " << s.compile_args << "\nobj-m += " << s.module << ".o\n";
-    if (s.uses_fp)  // same per-file FP flags as kernel/Kbuild
-        kb << "CFLAGS_" << s.module << ".o += -msse -msse2 -fno-math-errno -ffp-contract=off\n"
-           << "CFLAGS_REMOVE_" << s.module << ".o += -mno-sse -mno-sse2 -mno-mmx -mno-80387 "
+    if (!s.fp_file.empty()) {
+        // two objects, as kernel/kmod-manifest.sh builds them: the glue NAME_main.o
+        // without SSE, NAME_fp.o with the FP flags of kernel/Kbuild
+        std::string glue = s.module + "_main", fp = s.module + "_fp";
+        bool comp_parts = s.fp_file == s.c_file;
+        auto r = comp_parts ? write_file(dir / (glue + ".c"),
+                                         "#define __COMP_PART_GLUE\n#include \"" + s.module + ".c\"\n")
+                            : write_file(dir / (glue + ".c"), "#include \"" + s.c_file.string() + "\"\n");
+        if (!r)
+            return r.error();
+        r = comp_parts ? write_file(dir / (fp + ".c"), "#define __COMP_PART_FP\n#include \"" + s.module + ".c\"\n")
+                       : write_file(dir / (fp + ".c"), "#include \"" + s.fp_file.string() + "\"\n");
+        if (!r)
+            return r.error();
+        kb << s.module << "-y := " << glue << ".o " << fp << ".o\n"
+           << "CFLAGS_" << fp << ".o += -msse -msse2 -fno-math-errno -ffp-contract=off\n"
+           << "CFLAGS_REMOVE_" << fp << ".o += -mno-sse -mno-sse2 -mno-mmx -mno-80387 "
               "-mno-fp-ret-in-387\n";
+    }
     if (auto r = write_file(dir / "Kbuild", kb.str()); !r)
         return r.error();
     if (auto r = run({"make", "-C", kdir, "M=" + dir.string(),

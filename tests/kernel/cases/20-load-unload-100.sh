@@ -60,7 +60,7 @@ core="threads and2 siggen sampler streamer"
 others=
 for ko in "$M"/*.ko; do
 	name=${ko##*/}; name=${name%.ko}
-	case " rtapi hal_lib fmt_selftest $core " in *" $name "*) ;; *) others="$others $name" ;; esac
+	case " rtapi hal_lib fmt_selftest rtapi_conformance $core " in *" $name "*) ;; *) others="$others $name" ;; esac
 done
 cycle strict 100 $core
 echo "100 rounds of rtapi, hal_lib and $core: nothing left"
