@@ -55,8 +55,8 @@ static int comp_id;
 static struct sim_board *boards;
 static int num_boards;
 
-/* outside world -> model, time, and model -> connector pins */
-static void sync_model(struct sim_board *b)
+/* Before a transaction: the outside world's levels in, the model's time forward. */
+static void sync_in(struct sim_board *b)
 {
 	struct hm2_sim_model *m = &b->model;
 	int i;
@@ -64,9 +64,17 @@ static void sync_model(struct sim_board *b)
 	for (i = 0; i < m->num_pins; i++)
 		m->ext_in[i] = *b->io_in[i];
 	hm2_sim_model_advance(m, rtapi_get_time());
+	m->transactions++;
+}
+
+/* After it: the connector levels (writes may have changed them) and the counter. */
+static void sync_out(struct sim_board *b)
+{
+	struct hm2_sim_model *m = &b->model;
+	int i;
+
 	for (i = 0; i < m->num_pins; i++)
 		*b->io_out[i] = m->level[i];
-	m->transactions++;
 	*b->bus_words = m->words_read + m->words_written;
 }
 
@@ -83,10 +91,10 @@ static int sim_read(struct hm2_llio *llio, rtapi_u32 addr, void *buf, int size)
 
 	if (check(addr, size))
 		return -EINVAL;
-	sync_model(b);
+	sync_in(b);
 	for (i = 0; i < size / 4; i++)
 		w[i] = hm2_sim_model_read(&b->model, addr + 4 * i);
-	*b->bus_words = b->model.words_read + b->model.words_written;
+	sync_out(b);
 	return 0;
 }
 
@@ -98,10 +106,10 @@ static int sim_write(struct hm2_llio *llio, rtapi_u32 addr, const void *buf, int
 
 	if (check(addr, size))
 		return -EINVAL;
-	sync_model(b);
+	sync_in(b);
 	for (i = 0; i < size / 4; i++)
 		hm2_sim_model_write(&b->model, addr + 4 * i, w[i]);
-	*b->bus_words = b->model.words_read + b->model.words_written;
+	sync_out(b);
 	return 0;
 }
 
@@ -124,7 +132,7 @@ static int sim_send_queued_reads(struct hm2_llio *llio)
 	struct sim_board *b = llio->priv;
 	int i, j;
 
-	sync_model(b);
+	sync_in(b);
 	for (i = 0; i < b->num_rq; i++) {
 		rtapi_u32 *w = b->rq[i].buf;
 
@@ -132,7 +140,7 @@ static int sim_send_queued_reads(struct hm2_llio *llio)
 			w[j] = hm2_sim_model_read(&b->model, b->rq[i].addr + 4 * j);
 	}
 	b->num_rq = 0;
-	*b->bus_words = b->model.words_read + b->model.words_written;
+	sync_out(b);
 	return 0;
 }
 
@@ -148,11 +156,11 @@ static int sim_send_queued_writes(struct hm2_llio *llio)
 
 	if (!b->num_wq)
 		return 0;
-	sync_model(b);
+	sync_in(b);
 	for (i = 0; i < b->num_wq; i++)
 		hm2_sim_model_write(&b->model, b->wq_addr[i], b->wq_val[i]);
 	b->num_wq = 0;
-	*b->bus_words = b->model.words_read + b->model.words_written;
+	sync_out(b);
 	return 0;
 }
 
