@@ -198,6 +198,7 @@ struct hostmot2 {
 	int num_pins;
 	struct hm2_tram tram;
 	hal_bit_t io_error;		/* param <board>.io_error */
+	volatile int closing;		/* hm2_unregister() ran: the functions do nothing */
 	int read_requested;
 	long period_ns;			/* of the thread running write(), for the DPLL */
 	struct hm2_ioport ioport;

@@ -276,7 +276,7 @@ static void hm2_read_request(void *arg, long period)
 {
 	struct hostmot2 *hm2 = arg;
 
-	if (hm2->io_error)
+	if (hm2->io_error || hm2->closing)
 		return;
 	if (hm2_tram_request_reads(hm2) == 0)
 		hm2->read_requested = 1;
@@ -286,7 +286,7 @@ static void hm2_read(void *arg, long period)
 {
 	struct hostmot2 *hm2 = arg;
 
-	if (hm2->io_error)
+	if (hm2->io_error || hm2->closing)
 		return;
 	if (!hm2->read_requested)
 		hm2_read_request(arg, period);
@@ -308,7 +308,7 @@ static void hm2_write(void *arg, long period)
 	struct hostmot2 *hm2 = arg;
 	struct hm2_watchdog *wd = &hm2->watchdog;
 
-	if (hm2->io_error)
+	if (hm2->io_error || hm2->closing)
 		return;
 	hm2->period_ns = period;
 	if (hm2->llio->needs_reset || (wd->needs_force_write && !*wd->has_bit)) {
@@ -337,7 +337,7 @@ static void hm2_read_gpio(void *arg, long period)
 	struct hostmot2 *hm2 = arg;
 	struct hm2_ioport *io = &hm2->ioport;
 
-	if (hm2->io_error)
+	if (hm2->io_error || hm2->closing)
 		return;
 	if (hm2_read_now(hm2, hm2_md_addr(io->md, 0, 0), io->data_rd, io->num * 4) == 0)
 		hm2_ioport_read(hm2);
@@ -348,7 +348,7 @@ static void hm2_write_gpio(void *arg, long period)
 	struct hostmot2 *hm2 = arg;
 	struct hm2_ioport *io = &hm2->ioport;
 
-	if (hm2->io_error)
+	if (hm2->io_error || hm2->closing)
 		return;
 	hm2_ioport_write(hm2);
 	hm2_write_now(hm2, hm2_md_addr(io->md, 0, 0), io->data_wr, io->num * 4);
@@ -488,10 +488,11 @@ void hm2_unregister(struct hm2_llio *llio)
 
 	if (!hm2)
 		return;
-	if (!hm2->io_error && hm2->watchdog.md) {
+	/* the thread may still run read/write until the board's component goes away:
+	 * from now on they return at once, and the bite is written directly */
+	hm2->closing = 1;
+	if (!hm2->io_error)
 		hm2_watchdog_bite_now(hm2);
-		hm2_tram_flush_writes(hm2);
-	}
 	llio->hm2 = 0;
 }
 EXPORT_SYMBOL(hm2_unregister);

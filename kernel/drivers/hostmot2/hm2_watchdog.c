@@ -125,6 +125,7 @@ void hm2_watchdog_bite_now(struct hostmot2 *hm2)
 
 	if (!wd->md)
 		return;
-	hm2_write_now(hm2, hm2_md_addr(wd->md, REG_TIMER, 0), &timer, 4);
-	hm2_write_now(hm2, hm2_md_addr(wd->md, REG_RESET, 0), &pet, 4);
+	/* not queued: no write() will run to flush a queue */
+	hm2->llio->write(hm2->llio, hm2_md_addr(wd->md, REG_TIMER, 0), &timer, 4);
+	hm2->llio->write(hm2->llio, hm2_md_addr(wd->md, REG_RESET, 0), &pet, 4);
 }
