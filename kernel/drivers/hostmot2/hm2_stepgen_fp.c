@@ -92,7 +92,10 @@ void hm2_stepgen_prepare_write_fp(struct hostmot2 *hm2, long period)
 
 			x->old_position_cmd = *x->position_cmd;
 			if (x->maxaccel > 0.0) {
-				double stop = rtapi_sqrt(2.0 * x->maxaccel * rtapi_fabs(err));
+				/* fastest speed that still stops in |err| when slowing by
+				 * maxaccel x dt each period: v^2/2a + v dt/2 = |err| */
+				double h = x->maxaccel * dt / 2.0;
+				double stop = rtapi_sqrt(h * h + 2.0 * x->maxaccel * rtapi_fabs(err)) - h;
 
 				corr = limit(corr, -stop, stop);
 			}
