@@ -5,7 +5,7 @@
 #   (a) halrun -f wall time for the load workload at N = 1000, 4000, 16000 + growth exponent
 #   (b) per-function cost (ns) for the funct workload at N = 1000
 #   (c) samples/s halsampler drains from the sample workload with 8 channels, + overruns
-#   then stepgen figures, thread wake-up latency (simulated flavor) and the kernel
+#   then stepgen figures, hostmot2 read/write cost on the simulated board, thread wake-up latency (simulated flavor) and the kernel
 #   flavor's figures from inside qemu (emulated: behaviour, not speed)
 set -u
 build=$(cd "${1:-build}" && pwd)
@@ -68,6 +68,9 @@ halrun -U >/dev/null 2>&1
 
 echo "== stepgen: maximum step rates and make-pulses cost"
 "$build/bin/stepgen_bench"
+
+echo "== hostmot2: hm2 read + write per cycle, simulated 5i25+7i76 layout (simulated flavor)"
+"$here/hostmot2-bench.sh" "$build" 3
 
 echo "== latency: thread wake-up error (simulated flavor here; see bench/latency-test.sh for real hardware)"
 "$here/latency-test.sh" 5
