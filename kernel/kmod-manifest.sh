@@ -41,6 +41,13 @@ awk '!/^[ \t]*(#|$)/ { print }' "$manifest" | while read -r name fp sources; do
 		echo "$name-y :=$objs"
 	fi
 	if [ "$fp" = fp ]; then
-		for o in $objs; do echo "\$(eval \$(call fp_object,$o))"; done
+		# a module that has *_fp.c sources keeps its FP code there (HELPERS.md):
+		# only those objects get SSE; otherwise every object does
+		case " $objs " in *_fp.o\ *) only_fp=1;; *) only_fp=0;; esac
+		for o in $objs; do
+			case $only_fp:$o in
+			1:*_fp.o|0:*) echo "\$(eval \$(call fp_object,$o))";;
+			esac
+		done
 	fi
 done
