@@ -5,7 +5,7 @@
 #   (a) halrun -f wall time for the load workload at N = 1000, 4000, 16000 + growth exponent
 #   (b) per-function cost (ns) for the funct workload at N = 1000
 #   (c) samples/s halsampler drains from the sample workload with 8 channels, + overruns
-#   then stepgen figures, thread wake-up latency (simulated flavor) and the kernel
+#   then stepgen figures, hostmot2 read/write cost on the simulated board, thread wake-up latency (simulated flavor) and the kernel
 #   flavor's figures from inside qemu (emulated: behaviour, not speed)
 # BENCH_QUICK=1: small workloads, no latency or qemu part (the fresh-clone test
 # checks with it that the benchmark runs from a clone; its figures mean little).
@@ -77,6 +77,9 @@ halrun -U >/dev/null 2>&1
 
 echo "== stepgen: maximum step rates and make-pulses cost"
 "$build/bin/stepgen_bench"
+
+echo "== hostmot2: hm2 read + write per cycle, simulated 5i25+7i76 layout (simulated flavor)"
+"$here/hostmot2-bench.sh" "$build" 3
 
 if [ "$quick" = 1 ]; then
 	echo "== (BENCH_QUICK: no latency or kernel-flavor figures)"

@@ -1,0 +1,302 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
+/* hm2_sim.c - a board driver for a simulated HostMot2 card. Each board is a register
+ * model (hm2_sim_model.c) with a real IDROM, registered with hostmot2 exactly like a
+ * PCI or Ethernet card, so a configuration written for hm2_5i25.0 runs unchanged
+ * on the real card:
+ *   loadrt hostmot2
+ *   loadrt hm2_sim board=5i25 config="num_encoders=1 num_stepgens=3"
+ * board= and config= are comma-separated arrays, one entry per board (up to 4);
+ * fault= puts one IDROM defect into a board (tests of the driver's refusals).
+ * The world outside the card: pins hm2_sim.K.io.NNN.in (what outside devices drive
+ * onto IO pin NNN; encoders count from these) and hm2_sim.K.io.NNN.out (the level on
+ * the connector), K = board index in this module. Reads are batched (queued and
+ * sent as one request per cycle); hm2_sim.K.bus-words counts the 32-bit
+ * words moved. */
+#include "rtapi.h"
+#include "rtapi_app.h"
+#include "rtapi_string.h"
+#include "hal.h"
+#include "../hm2_llio.h"
+#include "hm2_sim_model.h"
+
+MODULE_LICENSE("GPL");
+MODULE_DESCRIPTION("Simulated Mesa HostMot2 board for hostmot2");
+
+#define MAX_BOARDS 4
+#define MAX_QUEUE 64
+#define MAX_QUEUED_WRITE_WORDS 1024
+
+static char *board[MAX_BOARDS];
+RTAPI_MP_ARRAY_STRING(board, MAX_BOARDS, "simulated boards: 5i25 (7i76 step/dir) or 5i20 (SVST8_4)");
+static char *config[MAX_BOARDS];
+RTAPI_MP_ARRAY_STRING(config, MAX_BOARDS, "hostmot2 config string of each board");
+static char *fault[MAX_BOARDS];
+RTAPI_MP_ARRAY_STRING(fault, MAX_BOARDS, "IDROM defect to present (driver tests)");
+
+struct queued_read {
+	rtapi_u32 addr;
+	void *buf;
+	int size;
+};
+
+struct sim_board {
+	struct hm2_llio llio;
+	struct hm2_sim_model model;
+	hal_bit_t **io_in, **io_out;	/* per IO pin */
+	hal_u32_t *bus_words;
+	struct queued_read rq[MAX_QUEUE];
+	int num_rq;
+	rtapi_u32 wq_addr[MAX_QUEUED_WRITE_WORDS], wq_val[MAX_QUEUED_WRITE_WORDS];
+	int num_wq;
+	int registered;
+};
+
+static int comp_id;
+static struct sim_board *boards;
+static int num_boards;
+
+/* Before a transaction: the outside world's levels in, the model's time forward. */
+static void sync_in(struct sim_board *b)
+{
+	struct hm2_sim_model *m = &b->model;
+	int i;
+
+	for (i = 0; i < m->num_pins; i++)
+		m->ext_in[i] = *b->io_in[i];
+	hm2_sim_model_advance(m, rtapi_get_time());
+	m->transactions++;
+}
+
+/* After it: the connector levels (writes may have changed them) and the counter. */
+static void sync_out(struct sim_board *b)
+{
+	struct hm2_sim_model *m = &b->model;
+	int i;
+
+	for (i = 0; i < m->num_pins; i++)
+		*b->io_out[i] = m->level[i];
+	*b->bus_words = m->words_read + m->words_written;
+}
+
+static int check(rtapi_u32 addr, int size)
+{
+	return (size <= 0 || (size & 3) || (addr & 3) || addr + size > 0x10000) ? -EINVAL : 0;
+}
+
+static int sim_read(struct hm2_llio *llio, rtapi_u32 addr, void *buf, int size)
+{
+	struct sim_board *b = llio->priv;
+	rtapi_u32 *w = buf;
+	int i;
+
+	if (check(addr, size))
+		return -EINVAL;
+	sync_in(b);
+	for (i = 0; i < size / 4; i++)
+		w[i] = hm2_sim_model_read(&b->model, addr + 4 * i);
+	sync_out(b);
+	return 0;
+}
+
+static int sim_write(struct hm2_llio *llio, rtapi_u32 addr, const void *buf, int size)
+{
+	struct sim_board *b = llio->priv;
+	const rtapi_u32 *w = buf;
+	int i;
+
+	if (check(addr, size))
+		return -EINVAL;
+	sync_in(b);
+	for (i = 0; i < size / 4; i++)
+		hm2_sim_model_write(&b->model, addr + 4 * i, w[i]);
+	sync_out(b);
+	return 0;
+}
+
+static int sim_queue_read(struct hm2_llio *llio, rtapi_u32 addr, void *buf, int size)
+{
+	struct sim_board *b = llio->priv;
+
+	if (check(addr, size) || b->num_rq >= MAX_QUEUE)
+		return -EINVAL;
+	b->rq[b->num_rq].addr = addr;
+	b->rq[b->num_rq].buf = buf;
+	b->rq[b->num_rq].size = size;
+	b->num_rq++;
+	return 0;
+}
+
+/* one request: every queued read sees the board at the same instant */
+static int sim_send_queued_reads(struct hm2_llio *llio)
+{
+	struct sim_board *b = llio->priv;
+	int i, j;
+
+	sync_in(b);
+	for (i = 0; i < b->num_rq; i++) {
+		rtapi_u32 *w = b->rq[i].buf;
+
+		for (j = 0; j < b->rq[i].size / 4; j++)
+			w[j] = hm2_sim_model_read(&b->model, b->rq[i].addr + 4 * j);
+	}
+	b->num_rq = 0;
+	sync_out(b);
+	return 0;
+}
+
+static int sim_receive_queued_reads(struct hm2_llio *llio)
+{
+	return 0;	/* the data arrived with the request */
+}
+
+static int sim_send_queued_writes(struct hm2_llio *llio)
+{
+	struct sim_board *b = llio->priv;
+	int i;
+
+	if (!b->num_wq)
+		return 0;
+	sync_in(b);
+	for (i = 0; i < b->num_wq; i++)
+		hm2_sim_model_write(&b->model, b->wq_addr[i], b->wq_val[i]);
+	b->num_wq = 0;
+	sync_out(b);
+	return 0;
+}
+
+static int sim_queue_write(struct hm2_llio *llio, rtapi_u32 addr, const void *buf, int size)
+{
+	struct sim_board *b = llio->priv;
+	const rtapi_u32 *w = buf;
+	int i;
+
+	if (check(addr, size))
+		return -EINVAL;
+	if (b->num_wq + size / 4 > MAX_QUEUED_WRITE_WORDS)
+		sim_send_queued_writes(llio);	/* a full packet goes out early */
+	for (i = 0; i < size / 4; i++) {
+		b->wq_addr[b->num_wq] = addr + 4 * i;
+		b->wq_val[b->num_wq] = w[i];
+		b->num_wq++;
+	}
+	return 0;
+}
+
+static int export_board(struct sim_board *b, int k)
+{
+	int n = b->model.num_pins, i, rc;
+
+	b->io_in = hal_malloc(n * sizeof(*b->io_in));
+	b->io_out = hal_malloc(n * sizeof(*b->io_out));
+	if (!b->io_in || !b->io_out)
+		return -ENOMEM;
+	rc = hal_pin_u32_newf(HAL_OUT, &b->bus_words, comp_id, "hm2_sim.%d.bus-words", k);
+	for (i = 0; i < n && !rc; i++) {
+		rc = hal_pin_bit_newf(HAL_IN, &b->io_in[i], comp_id, "hm2_sim.%d.io.%03d.in", k, i);
+		if (!rc)
+			rc = hal_pin_bit_newf(HAL_OUT, &b->io_out[i], comp_id, "hm2_sim.%d.io.%03d.out", k, i);
+	}
+	return rc;
+}
+
+static int setup_board(int k, const char *name, const char *cfg, const char *fault_name)
+{
+	const struct sim_layout *l = hm2_sim_layout_find(name);
+	struct sim_board *b = &boards[k];
+	int f = SIM_FAULT_NONE, same = 0, i, rc;
+
+	if (!l) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "hm2_sim: board=%s: unknown board; known: %s\n", name,
+				hm2_sim_layout_names());
+		return -EINVAL;
+	}
+	if (fault_name && *fault_name) {
+		f = hm2_sim_fault_find(fault_name);
+		if (f < 0) {
+			rtapi_print_msg(RTAPI_MSG_ERR, "hm2_sim: fault=%s: unknown fault; known: %s\n",
+					fault_name, hm2_sim_fault_names());
+			return -EINVAL;
+		}
+	}
+	for (i = 0; i < k; i++)
+		if (strcmp(boards[i].model.layout->board, l->board) == 0)
+			same++;
+	hm2_sim_model_init(&b->model, l, f, rtapi_get_time());
+	rtapi_snprintf(b->llio.name, sizeof(b->llio.name), "hm2_%s.%d", l->board, same);
+	b->llio.comp_id = comp_id;
+	b->llio.num_ioport_connectors = l->ports;
+	b->llio.pins_per_connector = l->port_width;
+	for (i = 0; i < l->ports && i < HM2_LLIO_MAX_CONNECTORS; i++)
+		b->llio.ioport_connector_name[i] = l->connector[i];
+	b->llio.num_leds = l->num_leds;
+	b->llio.threadsafe = 1;
+	b->llio.split_read = 0;	/* a PCI-like board: read() sends its own request */
+	b->llio.read = sim_read;
+	b->llio.write = sim_write;
+	b->llio.queue_read = sim_queue_read;
+	b->llio.send_queued_reads = sim_send_queued_reads;
+	b->llio.receive_queued_reads = sim_receive_queued_reads;
+	b->llio.queue_write = sim_queue_write;
+	b->llio.send_queued_writes = sim_send_queued_writes;
+	b->llio.priv = b;
+	rc = export_board(b, k);
+	if (rc)
+		return rc;
+	rtapi_print_msg(RTAPI_MSG_INFO, "hm2_sim: board %d is a simulated %s running %s\n", k,
+			l->board, l->firmware);
+	rc = hm2_register(&b->llio, cfg);
+	if (rc)
+		return rc;
+	b->registered = 1;
+	return 0;
+}
+
+int rtapi_app_main(void)
+{
+	int k, rc = 0;
+
+	comp_id = hal_init("hm2_sim");
+	if (comp_id < 0)
+		return comp_id;
+	for (num_boards = 0; num_boards < MAX_BOARDS && board[num_boards] && *board[num_boards];)
+		num_boards++;
+	if (!num_boards) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "hm2_sim: board= is required (%s)\n", hm2_sim_layout_names());
+		hal_exit(comp_id);
+		return -EINVAL;
+	}
+	for (k = num_boards; k < MAX_BOARDS; k++) {
+		if ((config[k] && *config[k]) || (fault[k] && *fault[k])) {
+			rtapi_print_msg(RTAPI_MSG_ERR, "hm2_sim: config= or fault= entry %d has no board= entry\n",
+					k);
+			hal_exit(comp_id);
+			return -EINVAL;
+		}
+	}
+	boards = hal_malloc(num_boards * sizeof(*boards));
+	if (!boards) {
+		hal_exit(comp_id);
+		return -ENOMEM;
+	}
+	for (k = 0; k < num_boards && !rc; k++)
+		rc = setup_board(k, board[k], config[k], fault[k]);
+	if (rc) {
+		for (k = 0; k < num_boards; k++)
+			if (boards[k].registered)
+				hm2_unregister(&boards[k].llio);
+		hal_exit(comp_id);
+		return rc;
+	}
+	hal_ready(comp_id);
+	return 0;
+}
+
+void rtapi_app_exit(void)
+{
+	int k;
+
+	for (k = 0; k < num_boards; k++)
+		if (boards[k].registered)
+			hm2_unregister(&boards[k].llio);
+	hal_exit(comp_id);
+}

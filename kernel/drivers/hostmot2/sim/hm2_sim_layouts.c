@@ -1,0 +1,102 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
+/* hm2_sim_layouts.c - the firmware layouts hm2_sim can present, and the faults it can
+ * put into their IDROM (one per refusal the driver makes, like LinuxCNC's hm2_test
+ * patterns). Pin descriptor words: primary tag 3 (IOPort) << 24 | unit << 16 |
+ * secondary tag << 8 | secondary pin (bit 7 = output). */
+#include "rtapi.h"
+#include "rtapi_string.h"
+#include "hm2_sim_model.h"
+
+#define PD(tag, unit, pin) ((3u << 24) | ((rtapi_u32)(unit) << 16) | ((rtapi_u32)(tag) << 8) | (pin))
+#define GPIO PD(0, 0, 0)
+#define STEP(u) PD(5, u, 0x81), PD(5, u, 0x82)
+#define STEP6(u) PD(5, u, 0x81), PD(5, u, 0x82), PD(5, u, 0x83), PD(5, u, 0x84), PD(5, u, 0x85), \
+	PD(5, u, 0x86)
+#define PWM(u) PD(6, u, 0x81), PD(6, u, 0x82), PD(6, u, 0x83)
+#define ENC(u) PD(4, u, 1), PD(4, u, 2), PD(4, u, 3)
+
+/* A 5i25 running the 7i76 step/dir firmware: five step/dir stepgens, a spindle
+ * encoder and PWM on P2, the DPLL; P3's 17 pins as GPIO (the real 7i76 field I/O
+ * is smart serial, not modelled). */
+static const struct sim_layout layout_5i25 = {
+	.board = "5i25", .firmware = "7i76 step/dir (5 stepgens, 1 encoder, 1 pwmgen)",
+	.idrom_name = "MESA5I25", .ports = 2, .port_width = 17, .num_leds = 2,
+	.connector = { "P2", "P3" },
+	.clock_low = 33333333, .clock_high = 200000000, .fpga_size = 9, .fpga_pins = 144,
+	.md = {
+		{ 2, 0, 1, 1, 0x0C00, 3, 0, 0x0 },		/* watchdog */
+		{ 3, 0, 1, 2, 0x1000, 5, 0, 0x1F },		/* ioport */
+		{ 4, 2, 1, 1, 0x3000, 5, 0, 0x03 },		/* encoder */
+		{ 5, 0x42, 1, 5, 0x2000, 10, 0, 0x1FF },	/* stepgen (swap step/dir) */
+		{ 6, 1, 2, 1, 0x4000, 5, 0, 0x03 },		/* pwmgen (dither) */
+		{ 26, 0, 1, 1, 0x7000, 7, 0, 0x0 },		/* hm2dpll */
+		{ 128, 0, 1, 1, 0x0200, 1, 0, 0x0 },		/* led */
+	},
+	.pd = {
+		STEP(0), STEP(1), STEP(2), STEP(3), STEP(4), PWM(0), ENC(0), GPIO,
+		GPIO, GPIO, GPIO, GPIO, GPIO, GPIO, GPIO, GPIO, GPIO, GPIO, GPIO, GPIO, GPIO, GPIO,
+		GPIO, GPIO, GPIO,
+	},
+};
+
+/* A 5i20 running SVST8_4: eight servo channels (encoder + PWM) on P2 and P3, four
+ * stepgens with six table-mode pins each on P4 (stepgen_width masks the extras). */
+static const struct sim_layout layout_5i20 = {
+	.board = "5i20", .firmware = "SVST8_4 (8 encoders, 8 pwmgens, 4 stepgens)",
+	.idrom_name = "MESA5I20", .ports = 3, .port_width = 24, .num_leds = 8,
+	.connector = { "P2", "P3", "P4" },
+	.clock_low = 33333333, .clock_high = 100000000, .fpga_size = 200, .fpga_pins = 208,
+	.md = {
+		{ 2, 0, 1, 1, 0x0C00, 3, 0, 0x0 },
+		{ 3, 0, 1, 3, 0x1000, 5, 0, 0x1F },
+		{ 4, 2, 1, 8, 0x3000, 5, 0, 0x03 },
+		{ 6, 0, 2, 8, 0x4000, 5, 0, 0x03 },
+		{ 5, 2, 1, 4, 0x2000, 10, 0, 0x1FF },
+		{ 128, 0, 1, 1, 0x0200, 1, 0, 0x0 },
+	},
+	.pd = {
+		ENC(0), ENC(1), ENC(2), ENC(3), PWM(0), PWM(1), PWM(2), PWM(3),
+		ENC(4), ENC(5), ENC(6), ENC(7), PWM(4), PWM(5), PWM(6), PWM(7),
+		STEP6(0), STEP6(1), STEP6(2), STEP6(3),
+	},
+};
+
+static const struct sim_layout *const layouts[] = { &layout_5i25, &layout_5i20 };
+
+const struct sim_layout *hm2_sim_layout_find(const char *board)
+{
+	unsigned i;
+
+	for (i = 0; i < sizeof(layouts) / sizeof(layouts[0]); i++)
+		if (strcmp(layouts[i]->board, board) == 0)
+			return layouts[i];
+	return 0;
+}
+
+const char *hm2_sim_layout_names(void)
+{
+	return "5i25 (7i76 step/dir), 5i20 (SVST8_4 servo)";
+}
+
+static const char *const fault_names[SIM_FAULT_COUNT] = {
+	"none", "no-cookie", "bad-name", "idrom-offset-0", "idrom-type", "port-width",
+	"io-width", "io-ports", "clock-low", "clock-high", "pd-sentinel", "no-ioport",
+	"md-inconsistent", "clock-tag", "duplicate-md",
+};
+
+int hm2_sim_fault_find(const char *name)
+{
+	int i;
+
+	for (i = 0; i < SIM_FAULT_COUNT; i++)
+		if (strcmp(fault_names[i], name) == 0)
+			return i;
+	return -1;
+}
+
+const char *hm2_sim_fault_names(void)
+{
+	return "none, no-cookie, bad-name, idrom-offset-0, idrom-type, port-width, io-width, "
+	       "io-ports, clock-low, clock-high, pd-sentinel, no-ioport, md-inconsistent, "
+	       "clock-tag, duplicate-md";
+}

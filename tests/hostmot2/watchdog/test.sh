@@ -1,0 +1,35 @@
+# The hm2 watchdog (5 ms default) sleeps until the first write(), then write() pets
+# it. When write stops running the watchdog bites: has_bit goes TRUE and every IO
+# pin is released (GPIO 017, driven high, falls to the outside level, 0; stepgen
+# 00's step pin stops being driven). Clearing has_bit with write running again
+# restores the pins. The timeout is 100 ms here so that a loaded test machine
+# (the simulated flavor's thread may not be realtime) does not bite early.
+set -e
+show() {
+	echo "$1: has_bit $(halcmd getp hm2_5i25.0.watchdog.has_bit)" \
+	     "gpio017 $(halcmd getp hm2_sim.0.io.017.out)" \
+	     "ddr $(halcmd getp hm2_5i25.0.raw.read_data)"
+}
+halcmd loadrt threads name1=thread period1=1000000
+halcmd loadrt hostmot2
+halcmd loadrt hm2_sim board=5i25 'config="enable_raw"'
+halcmd setp hm2_5i25.0.raw.read_address 0x1100
+halcmd setp hm2_5i25.0.watchdog.timeout_ns 100000000
+halcmd setp hm2_5i25.0.gpio.017.is_output TRUE
+halcmd setp hm2_5i25.0.gpio.017.out TRUE
+halcmd addf hm2_5i25.0.read thread
+halcmd addf hm2_5i25.0.write thread
+show loaded
+halcmd start
+sleep 0.5
+show running
+halcmd delf hm2_5i25.0.write thread
+sleep 0.5
+show "write stopped"
+halcmd addf hm2_5i25.0.write thread
+sleep 0.5
+show "write back, has_bit still set"
+halcmd setp hm2_5i25.0.watchdog.has_bit FALSE
+sleep 0.5
+show "has_bit cleared"
+halrun -U
