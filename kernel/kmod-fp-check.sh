@@ -36,7 +36,12 @@ for dir in "$@"; do
 		[ -f "$mod" ] || { echo "kmod-fp-check: $ko: no $mod (not a kbuild output directory?)" >&2; exit 2; }
 		fp_objs= other_objs=
 		for o in $(cat "$mod"); do
-			o=$(dirname "$ko")/$(basename "$o")
+			# kbuild lists objects by path (absolute, or relative to the output
+			# directory); drivers' objects sit in subdirectories of it
+			if [ ! -f "$o" ]; then
+				if [ -f "$(dirname "$ko")/$o" ]; then o=$(dirname "$ko")/$o
+				else o=$(dirname "$ko")/$(basename "$o"); fi
+			fi
 			case $name:$(basename "$o") in
 			*:*_fp.o|rtapi:rtapi_math*.o|rtapi:rtapi_format.o|rtapi:rtapi_print_entry_kmod.o)
 				fp_objs="$fp_objs $o";;
