@@ -99,6 +99,11 @@ int hal_param_u32_set(const char *name, unsigned long value);
 int hal_param_s32_set(const char *name, signed long value);
 int hal_param_set(const char *name, hal_type_t type, void *value_addr);
 
+/* --- aliases: a second name for a pin or parameter (LinuxCNC's hal_pin_alias).
+ * Both names then find the object. alias NULL or "" removes every alias of it. --- */
+int hal_pin_alias(const char *pin_name, const char *alias);
+int hal_param_alias(const char *param_name, const char *alias);
+
 /* --- signals (hal_signal_new(3hal)) --- */
 int hal_signal_new(const char *signal_name, hal_type_t type);
 int hal_signal_delete(const char *signal_name);

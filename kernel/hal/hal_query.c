@@ -483,3 +483,39 @@ int hal_memory_usage(unsigned long *used, unsigned long *total)
 	*total = hal_seg->size;
 	return 0;
 }
+
+int hal_set_exact_periods(void)
+{
+	int rc = 0;
+
+	if (need_segment())
+		return -EINVAL;
+	hal_lock();
+	if (hal_seg->count[HAL_KIND_THREAD]) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "setexact_for_test_suite_only: a thread exists already: "
+				"it must come before the first thread is created\n");
+		rc = -EBUSY;
+	} else {
+		hal_seg->exact_periods = 1;
+		rtapi_print_msg(RTAPI_MSG_INFO, "HAL takes thread periods exactly as asked; "
+				"this mode is not suitable for running real hardware\n");
+	}
+	hal_unlock();
+	return rc;
+}
+
+int hal_object_counts(struct hal_counts *out)
+{
+	if (need_segment())
+		return -EINVAL;
+	hal_lock();
+	out->comps = (int)hal_seg->count[HAL_KIND_COMP];
+	out->pins = (int)hal_seg->count[HAL_KIND_PIN];
+	out->params = (int)hal_seg->count[HAL_KIND_PARAM];
+	out->aliases = (int)hal_seg->alias_count;
+	out->sigs = (int)hal_seg->count[HAL_KIND_SIG];
+	out->functs = (int)hal_seg->count[HAL_KIND_FUNCT];
+	out->threads = (int)hal_seg->count[HAL_KIND_THREAD];
+	hal_unlock();
+	return 0;
+}

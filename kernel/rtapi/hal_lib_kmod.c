@@ -57,6 +57,8 @@ EXPORT_SYMBOL(hal_param_s32_newf);
 EXPORT_SYMBOL(hal_param_u32_new);
 EXPORT_SYMBOL(hal_param_u32_newf);
 EXPORT_SYMBOL(hal_param_set);
+EXPORT_SYMBOL(hal_pin_alias);
+EXPORT_SYMBOL(hal_param_alias);
 EXPORT_SYMBOL(hal_param_bit_set);
 EXPORT_SYMBOL(hal_param_float_set);
 EXPORT_SYMBOL(hal_param_s32_set);

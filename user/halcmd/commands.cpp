@@ -54,18 +54,31 @@ const Command table[] = {
      "Remove function FUNCTNAME from thread THREADNAME."},
     {"start", 0, 0, false, cmd_start, "start", "Start the realtime threads."},
     {"stop", 0, 0, false, cmd_stop, "stop", "Stop the realtime threads."},
-    {"lock", 0, 1, false, cmd_lock, "lock [none|load|config|params|run|all]",
+    {"lock", 0, 1, false, cmd_lock, "lock [none|load|config|tune|params|run|all]",
      "Lock HAL against loading, configuration, parameter changes or starting/stopping\n"
-     "threads (default: all). 'lock none' clears every lock."},
-    {"unlock", 0, 1, false, cmd_unlock, "unlock [none|load|config|params|run|all]",
+     "threads (default: all). 'tune' is load and config: parameters can still be tuned.\n"
+     "'lock none' clears every lock."},
+    {"unlock", 0, 1, false, cmd_unlock, "unlock [none|load|config|tune|params|run|all]",
      "Clear the given lock (default: all)."},
-    {"show", 0, -1, false, cmd_show, "show [comp|pin|sig|param|funct|thread|all] [PATTERN ...]",
+    {"alias", 3, 3, false, cmd_alias, "alias pin|param NAME ALIAS",
+     "Give pin or parameter NAME a second name ALIAS; both names then work everywhere."},
+    {"unalias", 2, 2, false, cmd_unalias, "unalias pin|param NAME",
+     "Remove alias NAME, or every alias of the pin or parameter NAME."},
+    {"debug", 0, 1, false, cmd_debug, "debug [LEVEL]",
+     "Set the RTAPI message level (0 none, 1 errors, 2 warnings, 3 info, 4 debug, 5 all)\n"
+     "of halcmd and of the realtime side; without LEVEL, print the current level."},
+    {"setexact_for_test_suite_only", 0, 0, false, cmd_setexact, "setexact_for_test_suite_only",
+     "Take thread periods exactly as asked, whatever the clock gives, so test results\n"
+     "repeat. Must come before the first thread; not for running real hardware."},
+    {"show", 0, -1, false, cmd_show, "show [comp|pin|sig|param|funct|thread|alias|all] [PATTERN ...]",
      "Print HAL objects. A pattern matches names starting with it, or as a glob (*, ?, [...])."},
-    {"list", 1, -1, false, cmd_list, "list comp|pin|sig|param|funct|thread [PATTERN ...]",
+    {"list", 1, -1, false, cmd_list, "list comp|pin|sig|param|funct|thread|alias [PATTERN ...]",
      "Print the names of HAL objects on one line."},
     {"save", 0, 2, false, cmd_save,
-     "save [comp|sig|sigu|link|linka|net|neta|netl|netla|param|unconnected|thread|all] [FILE]",
-     "Print HAL commands that rebuild the current HAL (to FILE if given)."},
+     "save [comp|alias|sig|sigu|link|linka|net|neta|netl|netla|param|unconnected|thread|all] [FILE]",
+     "Print HAL commands that rebuild the current HAL (to FILE if given). Without an item:\n"
+     "comp, alias, sigu, netla, param and thread; 'all' adds the values of unconnected\n"
+     "input pins and undriven signals, so that the output rebuilds the HAL exactly."},
     {"status", 0, 1, false, cmd_status, "status [lock|mem|all]", "Print the lock level and memory use."},
     {"echo", 0, -1, false, cmd_echo, "echo [WORDS ...]", "Print the words."},
     {"help", 0, 1, false, cmd_help, "help [COMMAND]", "List the commands, or explain one."},

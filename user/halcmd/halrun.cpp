@@ -99,6 +99,8 @@ int run_session(const HalrunOptions& opts)
         refuse_second_session();
         return 1;
     }
+    // This session ends with halrun, so rtapi_app may keep our stderr (rtapi_client.cpp).
+    setenv("RTAPI_APP_STDERR", "keep", 1);
     int status;
     {
         Session session(opts.halcmd);

@@ -92,20 +92,29 @@ std::optional<long long> parse_integer(std::string_view text, bool allow_minus)
 
 }  // namespace
 
+// RULINGS.md "bit values": what LinuxCNC's halcmd accepts for bits.
+std::optional<bool> parse_bit(std::string_view text)
+{
+    std::string t;
+    for (char c : text)
+        t += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (t == "1" || t == "true" || t == "on" || t == "yes")
+        return true;
+    if (t == "0" || t == "false" || t == "off" || t == "no")
+        return false;
+    return std::nullopt;
+}
+
 Result<hal_value> parse_value(hal_type_t type, std::string_view text)
 {
     hal_value v{};
     switch (type) {
     case HAL_BIT:
-        if (text == "1" || text == "TRUE" || text == "true") {
-            v.b = true;
+        if (auto b = parse_bit(text)) {
+            v.b = *b;
             return v;
         }
-        if (text == "0" || text == "FALSE" || text == "false") {
-            v.b = false;
-            return v;
-        }
-        return bad_value(text, "bit", "use 0, 1, TRUE, FALSE, true or false");
+        return bad_value(text, "bit", "use 1/0, true/false, on/off or yes/no, in any case");
     case HAL_S32: {
         auto n = parse_integer(text, true);
         if (!n || *n < INT32_MIN || *n > INT32_MAX)
