@@ -67,6 +67,8 @@ union hal_data {
 	hal_s32_t s;
 	hal_u32_t u;
 	hal_float_t f;
+	hal_s64_t ls;
+	hal_u64_t lu;
 	rtapi_u64 raw;
 };
 

@@ -65,6 +65,8 @@ static void read_value(union hal_value *v, int type, const volatile union hal_da
 	case HAL_BIT: v->b = d->b; break;
 	case HAL_S32: v->s = d->s; break;
 	case HAL_U32: v->u = d->u; break;
+	case HAL_S64: v->ls = (long long)rtapi_load_u64(&d->raw); break;
+	case HAL_U64: v->lu = rtapi_load_u64(&d->raw); break;
 	default: v->f = d->f; break;
 	}
 }
@@ -75,6 +77,8 @@ static void write_value(volatile union hal_data *d, int type, const union hal_va
 	case HAL_BIT: d->b = v->b; break;
 	case HAL_S32: d->s = v->s; break;
 	case HAL_U32: d->u = v->u; break;
+	case HAL_S64: rtapi_store_u64(&d->raw, (rtapi_u64)v->ls); break;
+	case HAL_U64: rtapi_store_u64(&d->raw, v->lu); break;
 	default: d->f = v->f; break;
 	}
 }

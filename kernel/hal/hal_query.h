@@ -22,6 +22,8 @@ union hal_value {
 	__s32 s;
 	__u32 u;
 	double f;
+	long long ls;		/* HAL_S64 */
+	unsigned long long lu;	/* HAL_U64 */
 };
 
 /* Map the HAL segment (creating it if no HAL runs yet). 0 or -errno. Idempotent. */

@@ -26,6 +26,8 @@ const char* c_type(HalType t)
     case HalType::Float: return "hal_float_t";
     case HalType::S32: return "hal_s32_t";
     case HalType::U32: return "hal_u32_t";
+    case HalType::S64: return "hal_s64_t";
+    case HalType::U64: return "hal_u64_t";
     }
     return "?";
 }

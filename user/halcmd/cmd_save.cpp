@@ -182,6 +182,8 @@ bool is_zero(const hal_sig_info& s)
     case HAL_BIT: return !s.value.b;
     case HAL_S32: return s.value.s == 0;
     case HAL_U32: return s.value.u == 0;
+    case HAL_S64: return s.value.ls == 0;
+    case HAL_U64: return s.value.lu == 0;
     default: return s.value.f == 0.0;
     }
 }

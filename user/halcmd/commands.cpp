@@ -26,7 +26,7 @@ const Command table[] = {
     {"unload", 1, 1, false, cmd_unload, "unload COMPNAME|all",
      "Unload a userspace component or realtime module; 'all' unloads everything."},
     {"newsig", 2, 2, false, cmd_newsig, "newsig SIGNAME TYPE",
-     "Create signal SIGNAME of TYPE bit, s32, u32 or float."},
+     "Create signal SIGNAME of TYPE bit, s32, u32, s64, u64 or float."},
     {"delsig", 1, 1, false, cmd_delsig, "delsig SIGNAME",
      "Delete signal SIGNAME; pins linked to it are unlinked."},
     {"linkps", 2, 2, true, cmd_linkps, "linkps PINNAME [ARROW] SIGNAME",
