@@ -71,7 +71,7 @@ int rtapi_app_main(void)
 		rtapi_print_msg(RTAPI_MSG_ERR, "at_pid: debug=%d, must be 0 or 1\n", debug);
 		return -EINVAL;
 	}
-	if (num_chan < 0 && (!names[0] || !names[0][0]))
+	if (num_chan <= 0 && (!names[0] || !names[0][0]))	/* num_chan=0: the default */
 		num_chan = AT_PID_DEFAULT;
 	n = instance_count("at_pid", "num_chan", num_chan, names, AT_PID_MAX, AT_PID_MAX);
 	if (n < 0)

@@ -125,7 +125,7 @@ int rtapi_app_main(void)
 	struct encoder_set *set;
 	int n, i, err;
 
-	if (num_chan < 0 && (!names[0] || !names[0][0]))
+	if (num_chan <= 0 && (!names[0] || !names[0][0]))	/* num_chan=0: the default */
 		num_chan = ENCODER_DEFAULT;
 	n = instance_count("encoder", "num_chan", num_chan, names, ENCODER_MAX, ENCODER_MAX);
 	if (n < 0)

@@ -11,8 +11,9 @@
 
 /* Number of instances asked for: 1..max, or -EINVAL after logging one line.
  * comp names the component in messages; count_param is the name of the count
- * parameter ("count", "num_chan"); count < 0 means it was not given (the
- * default is one instance). names[0..names_len-1] holds the names= entries,
+ * parameter ("count", "num_chan"); count < 0 (not given) and count = 0 mean the
+ * default, one instance (LinuxCNC; callers with another default substitute it).
+ * An empty names= (names[0] == "") counts as not given. names[0..names_len-1] holds the names= entries,
  * NULL where none was given. */
 static inline int instance_count(const char *comp, const char *count_param, int count,
 				 char *const *names, int names_len, int max)
@@ -20,7 +21,7 @@ static inline int instance_count(const char *comp, const char *count_param, int 
 	int n, i, k, len;
 
 	if (!names[0] || !names[0][0]) {
-		if (count < 0)
+		if (count <= 0)		/* count=0 is the default, as in LinuxCNC */
 			return 1;
 		if (count < 1 || count > max) {
 			rtapi_print_msg(RTAPI_MSG_ERR, "%s: %s=%d is out of range, must be 1..%d\n",
@@ -29,7 +30,7 @@ static inline int instance_count(const char *comp, const char *count_param, int 
 		}
 		return count;
 	}
-	if (count >= 0) {
+	if (count > 0) {
 		rtapi_print_msg(RTAPI_MSG_ERR,
 				"%s: %s= and names= are mutually exclusive; give only one of them\n",
 				comp, count_param);

@@ -48,7 +48,7 @@ int rtapi_app_main(void)
 		rtapi_print_msg(RTAPI_MSG_ERR, "pid: debug=%d, must be 0 or 1\n", debug);
 		return -EINVAL;
 	}
-	if (num_chan < 0 && (!names[0] || !names[0][0]))
+	if (num_chan <= 0 && (!names[0] || !names[0][0]))	/* num_chan=0: the default */
 		num_chan = PID_DEFAULT;
 	n = instance_count("pid", "num_chan", num_chan, names, PID_MAX, PID_MAX);
 	if (n < 0)

@@ -20,6 +20,8 @@ typedef bool hal_bool;
 typedef volatile bool hal_bit_t;
 typedef volatile __u32 hal_u32_t;
 typedef volatile __s32 hal_s32_t;
+typedef volatile rtapi_u64 hal_u64_t;	/* s64/u64: LinuxCNC 2.9's 64-bit pins */
+typedef volatile rtapi_s64 hal_s64_t;
 typedef double real_t __attribute__((aligned(8)));
 typedef real_t hal_real_t;
 typedef __u64 ireal_t __attribute__((aligned(8)));
@@ -30,7 +32,9 @@ typedef enum {
 	HAL_BIT = 1,
 	HAL_FLOAT = 2,
 	HAL_S32 = 3,
-	HAL_U32 = 4
+	HAL_U32 = 4,
+	HAL_S64 = 5,
+	HAL_U64 = 6
 } hal_type_t;
 
 typedef enum {
@@ -77,6 +81,20 @@ int hal_pin_u32_newf(hal_pin_dir_t dir, hal_u32_t **data_ptr_addr, int comp_id, 
 int hal_pin_s32_newf(hal_pin_dir_t dir, hal_s32_t **data_ptr_addr, int comp_id, const char *fmt, ...)
 	__attribute__((format(printf, 4, 5)));
 int hal_pin_new(const char *name, hal_type_t type, hal_pin_dir_t dir, void **data_ptr_addr, int comp_id);
+/* 64-bit integer pins and params (hal_pin64.c); realtime code reads and writes them
+ * with rtapi_load_u64/rtapi_store_u64 where another thread may look at them. */
+int hal_pin_s64_new(const char *name, hal_pin_dir_t dir, hal_s64_t **data_ptr_addr, int comp_id);
+int hal_pin_u64_new(const char *name, hal_pin_dir_t dir, hal_u64_t **data_ptr_addr, int comp_id);
+int hal_pin_s64_newf(hal_pin_dir_t dir, hal_s64_t **data_ptr_addr, int comp_id, const char *fmt, ...)
+	__attribute__((format(printf, 4, 5)));
+int hal_pin_u64_newf(hal_pin_dir_t dir, hal_u64_t **data_ptr_addr, int comp_id, const char *fmt, ...)
+	__attribute__((format(printf, 4, 5)));
+int hal_param_s64_new(const char *name, hal_param_dir_t dir, hal_s64_t *data_addr, int comp_id);
+int hal_param_u64_new(const char *name, hal_param_dir_t dir, hal_u64_t *data_addr, int comp_id);
+int hal_param_s64_newf(hal_param_dir_t dir, hal_s64_t *data_addr, int comp_id, const char *fmt, ...)
+	__attribute__((format(printf, 4, 5)));
+int hal_param_u64_newf(hal_param_dir_t dir, hal_u64_t *data_addr, int comp_id, const char *fmt, ...)
+	__attribute__((format(printf, 4, 5)));
 
 /* --- parameters (hal_param_new(3hal)) --- */
 int hal_param_bit_new(const char *name, hal_param_dir_t dir, hal_bit_t *data_addr, int comp_id);
@@ -98,6 +116,11 @@ int hal_param_float_set(const char *name, double value);
 int hal_param_u32_set(const char *name, unsigned long value);
 int hal_param_s32_set(const char *name, signed long value);
 int hal_param_set(const char *name, hal_type_t type, void *value_addr);
+
+/* --- aliases: a second name for a pin or parameter (LinuxCNC's hal_pin_alias).
+ * Both names then find the object. alias NULL or "" removes every alias of it. --- */
+int hal_pin_alias(const char *pin_name, const char *alias);
+int hal_param_alias(const char *param_name, const char *alias);
 
 /* --- signals (hal_signal_new(3hal)) --- */
 int hal_signal_new(const char *signal_name, hal_type_t type);

@@ -31,6 +31,8 @@ const char *hal_type_name(int type)
 	case HAL_FLOAT: return "float";
 	case HAL_S32: return "s32";
 	case HAL_U32: return "u32";
+	case HAL_S64: return "s64";
+	case HAL_U64: return "u64";
 	default: return "invalid-type";
 	}
 }

@@ -32,6 +32,25 @@ rtapi_u32 hal_name_hash(enum hal_kind kind, const char *name)
 	return h;
 }
 
+void hal_index_hash_insert(struct hal_seg_hdr *seg, struct hal_obj_hdr *obj)
+{
+	rtapi_u32 *bucket = &buckets(seg)[obj->hash & (HAL_HASH_BUCKETS - 1)];
+
+	obj->hash_next_off = *bucket;
+	*bucket = obj_off(seg, obj);
+}
+
+void hal_index_hash_remove(struct hal_seg_hdr *seg, struct hal_obj_hdr *obj)
+{
+	rtapi_u32 off = obj_off(seg, obj);
+	rtapi_u32 *link = &buckets(seg)[obj->hash & (HAL_HASH_BUCKETS - 1)];
+
+	while (*link && *link != off)
+		link = &obj_at(seg, *link)->hash_next_off;
+	if (*link)
+		*link = obj->hash_next_off;
+}
+
 void hal_index_insert(struct hal_seg_hdr *seg, struct hal_obj_hdr *obj)
 {
 	rtapi_u32 off = obj_off(seg, obj);
@@ -76,7 +95,7 @@ struct hal_obj_hdr *hal_index_find(struct hal_seg_hdr *seg, enum hal_kind kind, 
 
 	for (; o; o = obj_at(seg, o->hash_next_off))
 		if (o->hash == h && o->kind == kind && strcmp(o->name, name) == 0)
-			return o;
+			return (o->flags & HAL_OBJ_ALIAS) ? hal_alias_target(seg, o) : o;
 	return 0;
 }
 
@@ -146,6 +165,7 @@ void *hal_object_new(enum hal_kind kind, rtapi_u32 size, const char *name, rtapi
 
 void hal_object_delete(struct hal_obj_hdr *obj)
 {
+	hal_alias_remove_all(obj);	/* its other names go with it */
 	hal_index_remove(hal_seg, obj);
 	hal_free_block(hal_seg, obj);
 }

@@ -51,7 +51,18 @@ void hal_heap_compact(struct hal_seg_hdr *seg);
 rtapi_u32 hal_name_hash(enum hal_kind kind, const char *name);
 void hal_index_insert(struct hal_seg_hdr *seg, struct hal_obj_hdr *obj);
 void hal_index_remove(struct hal_seg_hdr *seg, struct hal_obj_hdr *obj);
+/* Finds objects by name or alias (an alias answers its target). */
 struct hal_obj_hdr *hal_index_find(struct hal_seg_hdr *seg, enum hal_kind kind, const char *name);
+/* Name index only, no kind list: for alias records. */
+void hal_index_hash_insert(struct hal_seg_hdr *seg, struct hal_obj_hdr *obj);
+void hal_index_hash_remove(struct hal_seg_hdr *seg, struct hal_obj_hdr *obj);
+
+/* --- aliases (hal_alias.c) --- */
+struct hal_obj_hdr *hal_alias_target(struct hal_seg_hdr *seg, const struct hal_obj_hdr *alias);
+/* Remove every alias of 'target' (no-op for kinds that have none). */
+void hal_alias_remove_all(struct hal_obj_hdr *target);
+/* Add (alias non-empty) or remove (NULL/"": all of them) aliases of a pin or param. */
+int hal_alias_set_locked(enum hal_kind kind, const char *name, const char *alias);
 /* Allocate a named record of 'size' bytes, check the name, index it. Logs and returns NULL
  * with *err set on failure (-EINVAL bad/long name, -EEXIST duplicate, -ENOMEM). */
 void *hal_object_new(enum hal_kind kind, rtapi_u32 size, const char *name, rtapi_u32 owner_off, int *err);

@@ -12,7 +12,7 @@
 
 #define HAL_KEY 0x48414c32		/* "HAL2": RTAPI shmem key of the segment */
 #define HAL_SEGMENT_SIZE (64u << 20)	/* sparse in userspace; holds ~100k pins */
-#define HAL_LAYOUT_VERSION 3
+#define HAL_LAYOUT_VERSION 4
 #define HAL_SEG_MAGIC 0x48414c21
 #define HAL_HASH_BUCKETS 65536u		/* power of two */
 #define HAL_ALIGN 8u
@@ -30,7 +30,12 @@ enum hal_kind {
 	HAL_KIND_MALLOC = HAL_KIND_COUNT,	/* hal_malloc() memory */
 	HAL_KIND_ENTRY,				/* a function's place in a thread */
 	HAL_KIND_STRING,			/* module arguments */
+	HAL_KIND_ALIAS,				/* struct hal_alias_rec (hal_alias.c) */
 };
+
+/* hal_obj_hdr.flags: set on alias records, which sit in the name index under the
+ * kind of their target (pin or param) but in no kind list. */
+#define HAL_OBJ_ALIAS 1u
 
 /* Precedes every block of the heap; blocks tile the heap from heap_start to heap_top. */
 struct hal_block_hdr {
@@ -50,7 +55,8 @@ struct hal_obj_hdr {
 	rtapi_u32 owner_off;	/* owning component record (0: signals, threads: the RT host) */
 	rtapi_u32 hash;
 	rtapi_u8 kind;		/* enum hal_kind */
-	rtapi_u8 pad[3];
+	rtapi_u8 flags;		/* HAL_OBJ_ALIAS */
+	rtapi_u8 pad[2];
 	char name[HAL_NAME_LEN + 1];
 };
 _Static_assert(sizeof(struct hal_obj_hdr) == 88, "segment layout changed: bump HAL_LAYOUT_VERSION");
@@ -61,6 +67,8 @@ union hal_data {
 	hal_s32_t s;
 	hal_u32_t u;
 	hal_float_t f;
+	hal_s64_t ls;
+	hal_u64_t lu;
 	rtapi_u64 raw;
 };
 
@@ -122,6 +130,17 @@ struct hal_funct_rec {
 };
 _Static_assert(sizeof(struct hal_funct_rec) == 128, "segment layout changed: bump HAL_LAYOUT_VERSION");
 
+/* A second name of a pin or parameter (halcmd "alias", hal_pin_alias()). hdr.kind is
+ * the target's kind, so hal_find() under the alias name answers the target itself;
+ * hdr.next_off/prev_off chain all aliases from hal_seg_hdr.alias_head. Removed with
+ * its target (hal_object_delete), never by its owner. */
+struct hal_alias_rec {
+	struct hal_obj_hdr hdr;
+	rtapi_u32 target_off;	/* the pin or param record */
+	rtapi_u32 pad;
+};
+_Static_assert(sizeof(struct hal_alias_rec) == 96, "segment layout changed: bump HAL_LAYOUT_VERSION");
+
 /* A function's place in a thread's list (HAL_KIND_ENTRY block, no name). */
 struct hal_entry_rec {
 	rtapi_u32 next_off;	/* written last when inserting: the thread walks without locking */
@@ -167,6 +186,10 @@ struct hal_seg_hdr {
 	rtapi_u32 count[HAL_KIND_COUNT];
 	rtapi_u32 pad;
 	rtapi_u64 rt_mem_base;	/* the realtime host's mapping: owner of threads and their pins */
+	rtapi_u32 alias_head;	/* hal_alias_rec list (hal_alias.c) */
+	rtapi_u32 alias_count;
+	rtapi_u32 exact_periods;/* halcmd setexact_for_test_suite_only: take periods as asked */
+	rtapi_u32 pad2;
 };
 
 #endif /* HAL_LAYOUT_H */

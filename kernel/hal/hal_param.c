@@ -12,7 +12,8 @@ int hal_param_new_locked(const char *name, hal_type_t type, hal_param_dir_t dir,
 	struct hal_param_rec *param;
 	int err;
 
-	if (type != HAL_BIT && type != HAL_FLOAT && type != HAL_S32 && type != HAL_U32) {
+	if (type != HAL_BIT && type != HAL_FLOAT && type != HAL_S32 && type != HAL_U32 &&
+	    type != HAL_S64 && type != HAL_U64) {
 		rtapi_print_msg(RTAPI_MSG_ERR, "parameter '%s': invalid type %d\n", name, (int)type);
 		return -EINVAL;
 	}
@@ -21,7 +22,7 @@ int hal_param_new_locked(const char *name, hal_type_t type, hal_param_dir_t dir,
 				name, (int)dir);
 		return -EINVAL;
 	}
-	if (!hal_in_segment(data_addr, type == HAL_FLOAT ? 8 : type == HAL_BIT ? 1 : 4)) {
+	if (!hal_in_segment(data_addr, type == HAL_BIT ? 1 : (type == HAL_S32 || type == HAL_U32) ? 4 : 8)) {
 		rtapi_print_msg(RTAPI_MSG_ERR,
 				"parameter '%s': its data is not in HAL shared memory (use hal_malloc)\n",
 				name);
@@ -161,6 +162,8 @@ int hal_param_set(const char *name, hal_type_t type, void *value_addr)
 		case HAL_BIT: *(hal_bit_t *)data = *(int *)value_addr != 0; break;
 		case HAL_FLOAT: *(volatile rtapi_u64 *)data = *(rtapi_u64 *)value_addr; break;
 		case HAL_S32: *(hal_s32_t *)data = *(rtapi_s32 *)value_addr; break;
+		case HAL_S64:
+		case HAL_U64: rtapi_store_u64((rtapi_u64 *)data, *(rtapi_u64 *)value_addr); break;
 		default: *(hal_u32_t *)data = *(rtapi_u32 *)value_addr; break;
 		}
 	}

@@ -5,7 +5,8 @@
 
 static bool type_valid(int type)
 {
-	return type == HAL_BIT || type == HAL_FLOAT || type == HAL_S32 || type == HAL_U32;
+	return type == HAL_BIT || type == HAL_FLOAT || type == HAL_S32 || type == HAL_U32 ||
+	       type == HAL_S64 || type == HAL_U64;
 }
 
 void hal_pin_aim(struct hal_pin_rec *pin, volatile void *target)

@@ -65,6 +65,8 @@ static void read_value(union hal_value *v, int type, const volatile union hal_da
 	case HAL_BIT: v->b = d->b; break;
 	case HAL_S32: v->s = d->s; break;
 	case HAL_U32: v->u = d->u; break;
+	case HAL_S64: v->ls = (long long)rtapi_load_u64(&d->raw); break;
+	case HAL_U64: v->lu = rtapi_load_u64(&d->raw); break;
 	default: v->f = d->f; break;
 	}
 }
@@ -75,6 +77,8 @@ static void write_value(volatile union hal_data *d, int type, const union hal_va
 	case HAL_BIT: d->b = v->b; break;
 	case HAL_S32: d->s = v->s; break;
 	case HAL_U32: d->u = v->u; break;
+	case HAL_S64: rtapi_store_u64(&d->raw, (rtapi_u64)v->ls); break;
+	case HAL_U64: rtapi_store_u64(&d->raw, v->lu); break;
 	default: d->f = v->f; break;
 	}
 }
@@ -481,5 +485,41 @@ int hal_memory_usage(unsigned long *used, unsigned long *total)
 		return -EINVAL;
 	*used = hal_seg->heap_start + hal_seg->bytes_used;
 	*total = hal_seg->size;
+	return 0;
+}
+
+int hal_set_exact_periods(void)
+{
+	int rc = 0;
+
+	if (need_segment())
+		return -EINVAL;
+	hal_lock();
+	if (hal_seg->count[HAL_KIND_THREAD]) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "setexact_for_test_suite_only: a thread exists already: "
+				"it must come before the first thread is created\n");
+		rc = -EBUSY;
+	} else {
+		hal_seg->exact_periods = 1;
+		rtapi_print_msg(RTAPI_MSG_INFO, "HAL takes thread periods exactly as asked; "
+				"this mode is not suitable for running real hardware\n");
+	}
+	hal_unlock();
+	return rc;
+}
+
+int hal_object_counts(struct hal_counts *out)
+{
+	if (need_segment())
+		return -EINVAL;
+	hal_lock();
+	out->comps = (int)hal_seg->count[HAL_KIND_COMP];
+	out->pins = (int)hal_seg->count[HAL_KIND_PIN];
+	out->params = (int)hal_seg->count[HAL_KIND_PARAM];
+	out->aliases = (int)hal_seg->alias_count;
+	out->sigs = (int)hal_seg->count[HAL_KIND_SIG];
+	out->functs = (int)hal_seg->count[HAL_KIND_FUNCT];
+	out->threads = (int)hal_seg->count[HAL_KIND_THREAD];
+	hal_unlock();
 	return 0;
 }

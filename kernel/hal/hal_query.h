@@ -22,6 +22,8 @@ union hal_value {
 	__s32 s;
 	__u32 u;
 	double f;
+	long long ls;		/* HAL_S64 */
+	unsigned long long lu;	/* HAL_U64 */
 };
 
 /* Map the HAL segment (creating it if no HAL runs yet). 0 or -errno. Idempotent. */
@@ -118,6 +120,27 @@ int hal_find_thread(const char *name, struct hal_thread_info *out);
 int hal_set_pin_value(const char *name, const union hal_value *v);
 int hal_set_param_value(const char *name, const union hal_value *v);
 int hal_set_sig_value(const char *name, const union hal_value *v);
+
+/* Aliases (hal_alias.c). unalias: 'name' is an alias (removed) or a pin/param name
+ * (all its aliases removed); -ENOENT with a message when it is neither. */
+struct hal_alias_info {
+	bool is_param;			/* else a pin alias */
+	char alias[HAL_NAME_LEN + 1];
+	char target[HAL_NAME_LEN + 1];	/* the pin's or param's own name */
+};
+int hal_query_aliases(int (*cb)(const struct hal_alias_info *, void *), void *ctx);
+int hal_unalias_pin(const char *name);
+int hal_unalias_param(const char *name);
+
+/* halcmd setexact_for_test_suite_only: the first thread's period is taken as asked,
+ * whatever the clock gives. -EBUSY (message) once a thread exists. */
+int hal_set_exact_periods(void);
+
+/* Number of objects of each kind (status mem). */
+struct hal_counts {
+	int comps, pins, params, aliases, sigs, functs, threads;
+};
+int hal_object_counts(struct hal_counts *out);
 
 bool hal_threads_running(void);
 /* Base period set by the first thread, 0 if none. */

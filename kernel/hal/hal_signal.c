@@ -8,7 +8,8 @@ static int signal_new_locked(const char *name, hal_type_t type)
 	struct hal_sig_rec *sig;
 	int err;
 
-	if (type != HAL_BIT && type != HAL_FLOAT && type != HAL_S32 && type != HAL_U32) {
+	if (type != HAL_BIT && type != HAL_FLOAT && type != HAL_S32 && type != HAL_U32 &&
+	    type != HAL_S64 && type != HAL_U64) {
 		rtapi_print_msg(RTAPI_MSG_ERR, "signal '%s': invalid type %d\n", name, (int)type);
 		return -EINVAL;
 	}

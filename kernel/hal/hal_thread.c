@@ -75,6 +75,10 @@ static long long thread_period(const char *name, unsigned long period)
 					name, period);
 			return -EINVAL;
 		}
+		/* setexact_for_test_suite_only: pretend the clock runs at the asked period,
+		 * so test results do not depend on the clock's granularity. */
+		if (hal_seg->exact_periods)
+			r = (long)period;
 		hal_seg->base_period_ns = r;
 		base = r;
 	}

@@ -95,6 +95,12 @@ static int split_list(const struct rtapi_mp_desc *d, char *value, char **elem, i
 	int n = 1, i;
 	char *p;
 
+	/* "names=" (nothing at all) is one empty string, as the kernel's module_param_array
+	 * makes it: components read it as "names= not given" (LinuxCNC: the default count). */
+	if (d->type == RTAPI_MP_TYPE_STRING && !value[0]) {
+		elem[0] = value;
+		return 1;
+	}
 	for (p = value; *p; p++)
 		if (*p == ',')
 			n++;

@@ -25,7 +25,7 @@ build_static() {
 	{ cmake -S "$root" -B "$static" -DCMAKE_BUILD_TYPE=Release -DCMAKE_EXE_LINKER_FLAGS=-static \
 		"-DREADLINE_LIBRARY=/usr/lib/$libdir/libreadline.a;/usr/lib/$libdir/libtinfo.a" \
 		-DHAL_KMOD_INSTALL_DIR=$vm_moddir -DCMAKE_INSTALL_PREFIX=/usr &&
-	  cmake --build "$static" -j"$(nproc)" --target halcmd halrun halsampler halstreamer emc_module_helper \
+	  cmake --build "$static" -j"$(nproc)" --target halcmd halrun realtime halsampler halstreamer emc_module_helper \
 		thread_cost
 	} >"$static.log" 2>&1 || { cat "$static.log" >&2; exit 1; }
 }
@@ -80,7 +80,7 @@ file -L /bin/busybox | grep -q 'statically linked' ||
 for ko in $(find "$out/modules" -name '*.ko'); do
 	strip --strip-debug -o "$ird$vm_moddir/$kver/${ko##*/}" "$ko"
 done
-for tool in halcmd halrun halsampler halstreamer emc_module_helper; do
+for tool in halcmd halrun realtime halsampler halstreamer emc_module_helper; do
 	strip -o "$ird/bin/$tool" "$static/bin/$tool"
 done
 # the HAL-level tests: every tests/<component>/<case>/ (not unit/, not kernel/), or

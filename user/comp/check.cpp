@@ -151,6 +151,8 @@ const char* type_name(HalType t)
     case HalType::Float: return "float";
     case HalType::S32: return "s32";
     case HalType::U32: return "u32";
+    case HalType::S64: return "s64";
+    case HalType::U64: return "u64";
     }
     return "?";
 }

@@ -33,6 +33,8 @@ const char* c_type(HalType t)
     case HalType::Float: return "hal_float_t";
     case HalType::S32: return "hal_s32_t";
     case HalType::U32: return "hal_u32_t";
+    case HalType::S64: return "hal_s64_t";
+    case HalType::U64: return "hal_u64_t";
     }
     return "?";
 }
@@ -583,13 +585,13 @@ private:
         o_ << "/* Number of instances asked for by count= or names=, or -EINVAL. */\n"
               "static __COMP_INIT int __comp_instance_count(void)\n{\n\tint i, k, n;\n\n";
         o_ << "\tif (!__comp_names_given()) {\n"
-              "\t\tif (count < 0)\n\t\t\treturn __comp_default_count;\n"
+              "\t\tif (count <= 0)\t/* count=0: the default, as in LinuxCNC */\n\t\t\treturn __comp_default_count;\n"
               "\t\tif (count < 1 || count > __COMP_MAX_COUNT) {\n"
               "\t\t\trtapi_print_msg(RTAPI_MSG_ERR, \"" << n
            << ": count=%d is out of range, must be 1..%d\\n\",\n"
               "\t\t\t\t\tcount, __COMP_MAX_COUNT);\n"
               "\t\t\treturn -EINVAL;\n\t\t}\n\t\treturn count;\n\t}\n";
-        o_ << "\tif (count >= 0) {\n"
+        o_ << "\tif (count > 0) {\n"
               "\t\trtapi_print_msg(RTAPI_MSG_ERR,\n\t\t\t\t\"" << n
            << ": count= and names= are mutually exclusive; give only one of them\\n\");\n"
               "\t\treturn -EINVAL;\n\t}\n";

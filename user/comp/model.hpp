@@ -8,7 +8,7 @@
 
 namespace hal::comp {
 
-enum class HalType { Bit, Float, S32, U32 };
+enum class HalType { Bit, Float, S32, U32, S64, U64 };
 enum class Dir { In, Out, Io, Ro, Rw };  // In/Out/Io for pins, Ro/Rw for params
 
 // One pin or param declaration: "pin out bit out-#[8 : personality] = 0 if X "doc";"

@@ -341,9 +341,12 @@ private:
         std::string t = r_.identifier();
         if (t == "bit") return HalType::Bit;
         if (t == "float") return HalType::Float;
-        if (t == "s32" || t == "signed") return HalType::S32;
-        if (t == "u32" || t == "unsigned") return HalType::U32;
-        r_.fail("expected the " + what + " type bit, float, s32 or u32" +
+        // si32/ui32: spellings LinuxCNC's halcompile also takes
+        if (t == "s32" || t == "si32" || t == "signed") return HalType::S32;
+        if (t == "u32" || t == "ui32" || t == "unsigned") return HalType::U32;
+        if (t == "s64") return HalType::S64;
+        if (t == "u64") return HalType::U64;
+        r_.fail("expected the " + what + " type bit, float, s32, u32, s64 or u64" +
                 (t.empty() ? r_.describe_next() : ", found '" + t + "'"));
     }
 

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // cmd_save.cpp - save (halcmd(1) "save", RULINGS.md "save"): HAL commands that rebuild
-// the current HAL when fed to "halcmd -f". Plain "save" and "save all" print every
-// section needed for that: components, unlinked signals, nets, parameter values,
-// unconnected input pin values, values of undriven signals, thread functions.
+// the current HAL when fed to "halcmd -f". Plain "save" prints what halcmd(1) and
+// LinuxCNC print: components, aliases, unlinked signals, nets, parameter values,
+// thread functions. "save all" adds unconnected input pin values and values of
+// undriven signals, so that its output rebuilds the HAL exactly.
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -19,6 +20,13 @@
 namespace hal::halcmd {
 
 namespace {
+
+std::string hex8(__u32 v)
+{
+    char buf[16];
+    std::snprintf(buf, sizeof(buf), "%08X", v);
+    return buf;
+}
 
 struct FileClose {
     void operator()(std::FILE* f) const noexcept
@@ -44,6 +52,17 @@ void save_comps(std::FILE* out, const Snapshot& h)
             std::fprintf(out, "loadrt %s %s\n", module.c_str(), c.args);
         else
             std::fprintf(out, "loadrt %s\n", module.c_str());
+    }
+}
+
+// "alias pin|param NAME ALIAS" lines; LinuxCNC's section titles.
+void save_aliases(std::FILE* out, const Snapshot& h)
+{
+    for (bool params : {false, true}) {
+        std::fprintf(out, params ? "# param aliases\n" : "# pin aliases\n");
+        for (const hal_alias_info& a : h.aliases)
+            if (a.is_param == params)
+                std::fprintf(out, "alias %s %s %s\n", params ? "param" : "pin", a.target, a.alias);
     }
 }
 
@@ -130,12 +149,23 @@ void save_netl(std::FILE* out, const Snapshot& h, bool arrows)
     }
 }
 
+// LinuxCNC's layout: the value right-aligned in 12 columns, u32 as 0x%08X.
+std::string saved_value(hal_type_t type, const hal_value& v)
+{
+    char buf[48];
+    if (type == HAL_U32)
+        std::snprintf(buf, sizeof(buf), "%12s", ("0x" + hex8(v.u)).c_str());
+    else
+        std::snprintf(buf, sizeof(buf), "%12s", format_value(type, v).c_str());
+    return buf;
+}
+
 void save_params(std::FILE* out, const Snapshot& h)
 {
     std::fprintf(out, "# parameter values\n");
     for (const hal_param_info& p : h.params)
         if (p.dir == HAL_RW)
-            std::fprintf(out, "setp %s %s\n", p.name, format_value(p.type, p.value).c_str());
+            std::fprintf(out, "setp %s %s\n", p.name, saved_value(p.type, p.value).c_str());
 }
 
 void save_unconnected(std::FILE* out, const Snapshot& h)
@@ -143,7 +173,7 @@ void save_unconnected(std::FILE* out, const Snapshot& h)
     std::fprintf(out, "# unconnected pin values\n");
     for (const hal_pin_info& p : h.pins)
         if (p.dir != HAL_OUT && !p.signal[0])
-            std::fprintf(out, "setp %s %s\n", p.name, format_value(p.type, p.value).c_str());
+            std::fprintf(out, "setp %s %s\n", p.name, saved_value(p.type, p.value).c_str());
 }
 
 bool is_zero(const hal_sig_info& s)
@@ -152,6 +182,8 @@ bool is_zero(const hal_sig_info& s)
     case HAL_BIT: return !s.value.b;
     case HAL_S32: return s.value.s == 0;
     case HAL_U32: return s.value.u == 0;
+    case HAL_S64: return s.value.ls == 0;
+    case HAL_U64: return s.value.lu == 0;
     default: return s.value.f == 0.0;
     }
 }
@@ -162,7 +194,7 @@ void save_sig_values(std::FILE* out, const Snapshot& h)
     std::fprintf(out, "# signal values\n");
     for (const hal_sig_info& s : h.sigs)
         if (s.writers == 0 && !is_zero(s))
-            std::fprintf(out, "sets %s %s\n", s.name, format_value(s.type, s.value).c_str());
+            std::fprintf(out, "sets %s %s\n", s.name, saved_value(s.type, s.value).c_str());
 }
 
 void save_threads(std::FILE* out, const Snapshot& h)
@@ -175,14 +207,19 @@ void save_threads(std::FILE* out, const Snapshot& h)
 
 void save_item(std::FILE* out, const Snapshot& h, const std::string& item)
 {
-    if (item == "all") {
+    if (item == "" || item == "all") {
         save_comps(out, h);
+        save_aliases(out, h);
         save_sigs(out, h, true);
         save_netl(out, h, true);
         save_params(out, h);
-        save_unconnected(out, h);
-        save_sig_values(out, h);
+        if (item == "all") {
+            save_unconnected(out, h);
+            save_sig_values(out, h);
+        }
         save_threads(out, h);
+    } else if (item == "alias") {
+        save_aliases(out, h);
     } else if (item == "comp") {
         save_comps(out, h);
     } else if (item == "sig" || item == "sigu") {
@@ -206,12 +243,12 @@ void save_item(std::FILE* out, const Snapshot& h, const std::string& item)
 
 Result<void> cmd_save(Session&, Args args)
 {
-    std::string item = args.empty() ? "all" : args[0];
-    static const std::set<std::string> items = {"all", "comp", "sig", "sigu", "link", "linka", "net", "neta",
+    std::string item = args.empty() ? "" : args[0];
+    static const std::set<std::string> items = {"", "all", "comp", "alias", "sig", "sigu", "link", "linka", "net", "neta",
                                                 "netl", "netla", "param", "unconnected", "thread"};
     if (!items.contains(item))
         return Error{-EINVAL, "save: '" + item +
-                                  "' is not one of comp, sig, sigu, link, linka, net, neta, netl, netla, param, "
+                                  "' is not one of comp, alias, sig, sigu, link, linka, net, neta, netl, netla, param, "
                                   "unconnected, thread, all"};
     File file;
     std::FILE* out = stdout;

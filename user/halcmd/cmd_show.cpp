@@ -19,7 +19,7 @@ namespace hal::halcmd {
 
 namespace {
 
-enum class Item { comp, pin, param, sig, funct, thread, all };
+enum class Item { comp, pin, param, sig, funct, thread, alias, all };
 
 std::optional<Item> parse_item(const std::string& s)
 {
@@ -35,6 +35,8 @@ std::optional<Item> parse_item(const std::string& s)
         return Item::funct;
     if (s == "thread")
         return Item::thread;
+    if (s == "alias")
+        return Item::alias;
     if (s == "all")
         return Item::all;
     return std::nullopt;
@@ -44,8 +46,9 @@ using Patterns = std::vector<std::string>;
 
 constexpr const char* comp_fmt = "%5s  %-4s  %-32s  %5s  %s\n";
 constexpr const char* pin_fmt = "%*s  %-5s %-4s %12s  %s%s\n";    // also params
-constexpr const char* sig_fmt = "%-5s %12s  %s";
-constexpr int sig_indent = 20;                                       // under the Name column
+// LinuxCNC's signal table: type in 5, value right-aligned in 12, linked pins indented 25.
+constexpr const char* sig_fmt = "%-5s  %12s  %s";
+constexpr int sig_indent = 25;
 constexpr const char* funct_fmt = "%*s  %-16s  %-16s  %-3s  %5s  %s\n";
 constexpr const char* thread_fmt = "%11s  %-3s  %-20s  ( %8s, %8s )\n";
 constexpr int thread_indent = 18;
@@ -150,7 +153,7 @@ void show_sigs(const Snapshot& h, const Patterns& pats, bool script)
 {
     heading(script, "Signals:");
     if (!script) {
-        std::printf(sig_fmt, "Type", "Value", "Name");
+        std::printf("%-5s  %12s  %s", "Type", "Value", "Name");
         std::printf("     (linked to)\n");
     }
     for (const hal_sig_info& s : h.sigs) {
@@ -215,6 +218,19 @@ void show_threads(const Snapshot& h, const Patterns& pats, bool script)
     trailer(script);
 }
 
+void show_aliases(const Snapshot& h, const Patterns& pats, bool script)
+{
+    for (bool params : {false, true}) {
+        heading(script, params ? "Parameter Aliases:" : "Pin Aliases:");
+        if (!script)
+            std::printf(" %-36s  %s\n", "Alias", "Original Name");
+        for (const hal_alias_info& a : h.aliases)
+            if (a.is_param == params && (name_matches(pats, a.alias) || name_matches(pats, a.target)))
+                std::printf(" %-36s  %s\n", a.alias, a.target);
+        trailer(script);
+    }
+}
+
 void list_names(const Snapshot& h, Item item, const Patterns& pats)
 {
     std::vector<std::string> names;
@@ -233,11 +249,13 @@ void list_names(const Snapshot& h, Item item, const Patterns& pats)
     case Item::sig: for (const auto& x : h.sigs) add(x.name); break;
     case Item::funct: for (const auto& x : h.functs) add(x.name); break;
     case Item::thread: for (const auto& x : h.threads) add(x.info.name); break;
+    case Item::alias: for (const auto& x : h.aliases) add(x.alias); break;
     case Item::all: break;
     }
+    // LinuxCNC prints every name followed by one space; scripts split on it.
     std::string line;
     for (const std::string& n : names)
-        line += (line.empty() ? "" : " ") + n;
+        line += n + " ";
     std::printf("%s\n", line.c_str());
 }
 
@@ -268,6 +286,8 @@ Result<void> cmd_show(Session& s, Args args)
         show_functs(h, pats, script);
     if (all || item == Item::thread)
         show_threads(h, pats, script);
+    if (item == Item::alias)            // not part of "show all", as before aliases existed
+        show_aliases(h, pats, script);
     return ok();
 }
 
@@ -275,7 +295,7 @@ Result<void> cmd_list(Session&, Args args)
 {
     auto item = parse_item(args[0]);
     if (!item || *item == Item::all)
-        return Error{-EINVAL, "list: '" + args[0] + "' is not one of comp, pin, sig, param, funct, thread"};
+        return Error{-EINVAL, "list: '" + args[0] + "' is not one of comp, pin, sig, param, funct, thread, alias"};
     Patterns pats(args.begin() + 1, args.end());
     list_names(take_snapshot(), *item, pats);
     return ok();

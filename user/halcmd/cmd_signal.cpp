@@ -64,7 +64,7 @@ Result<void> cmd_newsig(Session& s, Args args)
         return r;
     auto type = parse_type_name(args[1]);
     if (!type)
-        return Error{-EINVAL, "newsig " + args[0] + ": '" + args[1] + "' is not a type (use bit, s32, u32 or float)"};
+        return Error{-EINVAL, "newsig " + args[0] + ": '" + args[1] + "' is not a type (use bit, s32, u32, s64, u64 or float)"};
     if (auto r = s.check(hal_signal_new(args[0].c_str(), *type), "creating signal '" + args[0] + "'"); !r)
         return r;
     s.info("Signal '" + args[0] + "' created");

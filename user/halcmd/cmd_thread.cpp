@@ -21,6 +21,7 @@ struct LockLevel {
 const LockLevel lock_levels[] = {
     {"none", HAL_LOCK_NONE},     {"load", HAL_LOCK_LOAD}, {"config", HAL_LOCK_CONFIG},
     {"params", HAL_LOCK_PARAMS}, {"run", HAL_LOCK_RUN},   {"all", HAL_LOCK_ALL},
+    {"tune", HAL_LOCK_LOAD | HAL_LOCK_CONFIG},   // LinuxCNC's HAL_LOCK_TUNE: params stay settable
 };
 
 std::optional<int> parse_lock_level(const std::string& name)
@@ -33,7 +34,7 @@ std::optional<int> parse_lock_level(const std::string& name)
 
 Error bad_level(const char* cmd, const std::string& name)
 {
-    return Error{-EINVAL, std::string(cmd) + ": '" + name + "' is not a lock level (use none, load, config, params, run or all)"};
+    return Error{-EINVAL, std::string(cmd) + ": '" + name + "' is not a lock level (use none, load, config, tune, params, run or all)"};
 }
 
 }  // namespace
@@ -46,7 +47,7 @@ Result<void> require_unlocked(int lock_bits, std::string_view command)
         return ok();
     // Worded like the HAL core's own lock refusals (hal_lock.c).
     for (const LockLevel& l : lock_levels)
-        if (l.bits != HAL_LOCK_NONE && l.bits != HAL_LOCK_ALL && (held & l.bits))
+        if (l.bits != HAL_LOCK_NONE && l.bits != HAL_LOCK_ALL && (held & l.bits) == l.bits)
             return Error{-EPERM, std::string("HAL is locked (") + l.name + "): cannot run '" + std::string(command) +
                                      "'; use 'unlock " + l.name + "' first"};
     return Error{-EPERM, "HAL is locked: cannot run '" + std::string(command) + "'"};

@@ -71,6 +71,10 @@ Result<void> cmd_echo(Session&, Args);
 Result<void> cmd_help(Session&, Args);
 Result<void> cmd_source(Session&, Args);
 Result<void> cmd_quit(Session&, Args);
+Result<void> cmd_alias(Session&, Args);
+Result<void> cmd_unalias(Session&, Args);
+Result<void> cmd_debug(Session&, Args);
+Result<void> cmd_setexact(Session&, Args);
 
 // Shared by unloadusr/unload and halrun's teardown: SIGTERM userspace components
 // ("all" or one name) and wait (bounded) until they are gone.

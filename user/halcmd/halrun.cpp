@@ -15,12 +15,8 @@
 #include "realtime.hpp"
 #include "session.hpp"
 #include "snapshot.hpp"
+#include "teardown.hpp"
 
-#if __has_include("rtapi_shmem_uspace.h")
-#include "rtapi_shmem_uspace.h"
-#else
-extern "C" int rtapi_shmem_force_unlink_all(void);
-#endif
 
 namespace {
 
@@ -44,61 +40,14 @@ void refuse_second_session()
              "); end it with 'halrun -U'");
 }
 
-// Stop threads, unload userspace components and realtime modules.
-// Returns false if something could not be undone (each problem printed once).
-bool teardown_attached()
-{
-    bool ok = true;
-    hal_set_lock(HAL_LOCK_NONE);                 // a locked HAL must not block its own teardown
-    if (hal_threads_running())
-        hal_stop_threads();
-    if (auto r = unload_user_components(nullptr, "all"); !r) {
-        complain(r.error().message);
-        ok = false;
-    }
-    if (rt_running()) {
-        if (auto r = rt_unload("all"); !r) {
-            complain(r.error().message);
-            ok = false;
-        }
-    }
-    return ok;
-}
-
-// After the last user detached: stop rtapi_app and drop the segments (sim), or
-// unload hal_lib and rtapi (kernel), so signals made by halcmd itself do not leak
-// into the next session.
-bool shutdown_realtime()
-{
-    bool ok = true;
-    if (kernel_flavor() || rt_running()) {
-        if (auto r = rt_shutdown(); !r) {
-            complain(r.error().message);
-            ok = false;
-        }
-    }
-    rtapi_shmem_force_unlink_all();
-    return ok;
-}
-
-int force_exit()
-{
-    // kernel: attaching must not load hal_lib just to unload it again
-    if ((!kernel_flavor() || hal::kmod::module_loaded("hal_lib")) && hal_attach() == 0) {
-        hal_release_mutex();
-        teardown_attached();
-        hal_detach();
-    }
-    shutdown_realtime();
-    return 0;
-}
-
 int run_session(const HalrunOptions& opts)
 {
     if (rt_running()) {
         refuse_second_session();
         return 1;
     }
+    // This session ends with halrun, so rtapi_app may keep our stderr (rtapi_client.cpp).
+    setenv("RTAPI_APP_STDERR", "keep", 1);
     int status;
     {
         Session session(opts.halcmd);
@@ -113,10 +62,10 @@ int run_session(const HalrunOptions& opts)
         status = opts.interactive && !has_input ? 0 : session.run_input();
         if (opts.interactive && session.run_keep_going_stdin() != 0)
             status = 1;
-        if (!teardown_attached())
+        if (!teardown_attached("halrun"))
             status = 1;
     }                                             // the session detaches here
-    if (!shutdown_realtime())
+    if (!shutdown_realtime("halrun"))
         status = 1;
     return status;
 }
@@ -137,7 +86,7 @@ int main(int argc, char** argv)
             return 1;
         }
         if (opts->force_exit)
-            return force_exit();
+            return force_exit("halrun");
         if (opts->halcmd.help) {
             hal::halcmd::Session s(opts->halcmd);
             return s.run();

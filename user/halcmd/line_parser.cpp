@@ -220,8 +220,8 @@ bool join_continuation(std::string& logical, std::string_view physical)
     size_t end = physical.find_last_not_of(" \t");
     bool continues = end != std::string_view::npos && physical[end] == '\\';
     if (continues) {
+        // Joined directly, as LinuxCNC does: "names=d1\" + ",d2" is "names=d1,d2".
         logical.append(physical.substr(0, end));
-        logical.push_back(' ');
     } else {
         logical.append(physical);
     }

@@ -31,7 +31,8 @@ Substitutions process_substitutions(const IniFile* ini);
 Result<std::vector<std::string>> tokenize(std::string_view line, const Substitutions& subs);
 
 // Append a physical line (without its '\n') to a logical line. Returns true when
-// the physical line ended in a backslash, i.e. the logical line continues.
+// the physical line ended in a backslash, i.e. the logical line continues. The
+// backslash goes and the next line is appended directly (no blank is inserted).
 bool join_continuation(std::string& logical, std::string_view physical);
 
 // "=>", "<=" or "<=>": direction arrows net/linkps/linksp/linkpp accept and ignore.

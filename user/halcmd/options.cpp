@@ -86,8 +86,7 @@ Result<Options> parse_halcmd_options(std::span<const std::string> args)
         return o;
     }
     if (o.from_file) {
-        if (rest.size() > 1)
-            return usage_error("-f takes one file, but got extra argument '" + rest[1] + "'");
+        // halcmd(1): the rest of the command line after the file is ignored.
         if (!rest.empty())
             o.file = rest[0];
         return o;

@@ -3,6 +3,7 @@
 #include "realtime.hpp"
 
 #include <cerrno>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 
@@ -56,6 +57,30 @@ Result<void> rt_unload(const std::string& module)
     if (!take_snapshot().threads.empty())
         return hal::kmod::reload_hal_lib();
     return ok();
+}
+
+Result<void> rt_set_msg_level(int level)
+{
+    if (!kernel_flavor())
+        return hal::rtapi_set_msg_level(level);
+    const char* path = "/sys/module/rtapi/parameters/msg_level";
+    std::FILE* f = std::fopen(path, "w");
+    if (!f) {
+        if (errno == ENOENT)
+            return ok();                 // rtapi.ko is not loaded
+        return Error{-errno, std::string("debug: cannot write ") + path + ": " + std::strerror(errno)};
+    }
+    std::fprintf(f, "%d\n", level);
+    if (std::fclose(f) != 0)
+        return Error{-errno, std::string("debug: writing ") + path + ": " + std::strerror(errno)};
+    return ok();
+}
+
+Result<void> rt_start()
+{
+    if (kernel_flavor())
+        return hal::kmod::load_core();
+    return hal::rtapi_start();
 }
 
 bool rt_running()

@@ -25,6 +25,14 @@ Result<void> rt_prepare();
 Result<void> rt_load(const std::string& module, const std::vector<std::string>& args);
 Result<void> rt_unload(const std::string& module);
 
+// halcmd "debug": the message level of the realtime side (rtapi_app's, or rtapi.ko's
+// msg_level parameter). Nothing to do when nothing realtime runs.
+Result<void> rt_set_msg_level(int level);
+
+// Start the realtime environment without loading a component ("realtime start"):
+// rtapi_app (sim), rtapi.ko + hal_lib.ko (kernel).
+Result<void> rt_start();
+
 // True when realtime modules are loaded (kernel) / rtapi_app answers (sim).
 bool rt_running();
 

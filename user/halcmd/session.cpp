@@ -47,6 +47,9 @@ Session::Session(Options opts) : opts_(std::move(opts))
         rtapi_set_msg_level(RTAPI_MSG_INFO);
     else if (opts_.verbosity == Verbosity::debug)
         rtapi_set_msg_level(RTAPI_MSG_ALL);
+    // -Q "display nothing" (halcmd(1)): not even what show/getp print.
+    if (opts_.verbosity == Verbosity::silent && !std::freopen("/dev/null", "w", stdout))
+        std::fclose(stdout);
 }
 
 Session::~Session()

@@ -39,6 +39,10 @@ Snapshot take_snapshot()
     hal_query_params(push_info<hal_param_info>, &s.params);
     hal_query_sigs(push_info<hal_sig_info>, &s.sigs);
     hal_query_functs(push_info<hal_funct_info>, &s.functs);
+    hal_query_aliases(push_info<hal_alias_info>, &s.aliases);
+    std::sort(s.aliases.begin(), s.aliases.end(), [](const hal_alias_info& a, const hal_alias_info& b) {
+        return std::strcmp(a.alias, b.alias) < 0;
+    });
     std::vector<hal_thread_info> threads;
     hal_query_threads(push_info<hal_thread_info>, &threads);
 

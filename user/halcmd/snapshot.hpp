@@ -23,6 +23,7 @@ struct Snapshot {
     std::vector<hal_sig_info> sigs;
     std::vector<hal_funct_info> functs;
     std::vector<ThreadEntry> threads;
+    std::vector<hal_alias_info> aliases;  // by alias name
 };
 
 // Reads the attached HAL. Takes and drops the HAL mutex once per object kind.

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <utility>
 
 namespace hal::halcmd {
 
@@ -18,6 +19,8 @@ const char* type_name(hal_type_t type)
     case HAL_BIT: return "bit";
     case HAL_S32: return "s32";
     case HAL_U32: return "u32";
+    case HAL_S64: return "s64";
+    case HAL_U64: return "u64";
     case HAL_FLOAT: return "float";
     default: return "unknown";
     }
@@ -33,6 +36,10 @@ std::optional<hal_type_t> parse_type_name(std::string_view name)
         return HAL_U32;
     if (name == "float")
         return HAL_FLOAT;
+    if (name == "s64")
+        return HAL_S64;
+    if (name == "u64")
+        return HAL_U64;
     return std::nullopt;
 }
 
@@ -90,22 +97,61 @@ std::optional<long long> parse_integer(std::string_view text, bool allow_minus)
     return neg ? -v : v;
 }
 
+// The same rules for 64-bit values: the magnitude as unsigned, with its sign.
+std::optional<std::pair<bool, unsigned long long>> parse_integer64(std::string_view text)
+{
+    std::string s(text);
+    size_t i = 0;
+    bool neg = false;
+    if (i < s.size() && (s[i] == '+' || s[i] == '-')) {
+        neg = s[i] == '-';
+        i++;
+    }
+    int base = 10;
+    if (i + 1 < s.size() && s[i] == '0' && (s[i + 1] == 'x' || s[i + 1] == 'X')) {
+        base = 16;
+        i += 2;
+    }
+    if (i >= s.size())
+        return std::nullopt;
+    for (size_t k = i; k < s.size(); k++) {
+        bool ok = base == 16 ? std::isxdigit(static_cast<unsigned char>(s[k]))
+                             : std::isdigit(static_cast<unsigned char>(s[k]));
+        if (!ok)
+            return std::nullopt;
+    }
+    errno = 0;
+    unsigned long long v = std::strtoull(s.c_str() + i, nullptr, base);
+    if (errno == ERANGE)
+        return std::nullopt;
+    return std::make_pair(neg, v);
+}
+
 }  // namespace
+
+// RULINGS.md "bit values": what LinuxCNC's halcmd accepts for bits.
+std::optional<bool> parse_bit(std::string_view text)
+{
+    std::string t;
+    for (char c : text)
+        t += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (t == "1" || t == "true" || t == "on" || t == "yes")
+        return true;
+    if (t == "0" || t == "false" || t == "off" || t == "no")
+        return false;
+    return std::nullopt;
+}
 
 Result<hal_value> parse_value(hal_type_t type, std::string_view text)
 {
     hal_value v{};
     switch (type) {
     case HAL_BIT:
-        if (text == "1" || text == "TRUE" || text == "true") {
-            v.b = true;
+        if (auto b = parse_bit(text)) {
+            v.b = *b;
             return v;
         }
-        if (text == "0" || text == "FALSE" || text == "false") {
-            v.b = false;
-            return v;
-        }
-        return bad_value(text, "bit", "use 0, 1, TRUE, FALSE, true or false");
+        return bad_value(text, "bit", "use 1/0, true/false, on/off or yes/no, in any case");
     case HAL_S32: {
         auto n = parse_integer(text, true);
         if (!n || *n < INT32_MIN || *n > INT32_MAX)
@@ -119,6 +165,22 @@ Result<hal_value> parse_value(hal_type_t type, std::string_view text)
         if (!n || *n < 0 || *n > UINT32_MAX)
             return bad_value(text, "u32", "use a decimal or 0x hex integer from 0 to 4294967295");
         v.u = static_cast<__u32>(*n);
+        return v;
+    }
+    case HAL_S64: {
+        auto n = parse_integer64(text);
+        bool fits = n && (n->first ? n->second <= 9223372036854775808ULL : n->second <= 9223372036854775807ULL);
+        if (!fits)
+            return bad_value(text, "s64", "use a decimal or 0x hex integer from -9223372036854775808 to "
+                                          "9223372036854775807");
+        v.ls = n->first ? static_cast<long long>(0ULL - n->second) : static_cast<long long>(n->second);
+        return v;
+    }
+    case HAL_U64: {
+        auto n = parse_integer64(text);
+        if (!n || (n->first && n->second != 0))
+            return bad_value(text, "u64", "use a decimal or 0x hex integer from 0 to 18446744073709551615");
+        v.lu = n->second;
         return v;
     }
     case HAL_FLOAT: {
@@ -153,6 +215,8 @@ std::string format_value(hal_type_t type, const hal_value& v)
     case HAL_BIT: return v.b ? "TRUE" : "FALSE";
     case HAL_S32: return std::to_string(v.s);
     case HAL_U32: return std::to_string(v.u);
+    case HAL_S64: return std::to_string(v.ls);
+    case HAL_U64: return std::to_string(v.lu);
     case HAL_FLOAT: return format_float(v.f);
     default: return "?";
     }

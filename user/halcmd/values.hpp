@@ -19,7 +19,9 @@ std::optional<hal_type_t> parse_type_name(std::string_view name);
 const char* pin_dir_name(hal_pin_dir_t dir);                  // "IN", "OUT", "I/O"
 const char* param_dir_name(hal_param_dir_t dir);              // "RO", "RW"
 
-// bit: 0 1 TRUE FALSE true false; s32/u32: decimal or 0x hex, range-checked;
+// 1/0, true/false, on/off, yes/no in any case (RULINGS.md "bit values").
+std::optional<bool> parse_bit(std::string_view text);
+// bit: parse_bit(); s32/u32: decimal or 0x hex, range-checked;
 // float: a full strtod() match. The error says the value and what is accepted.
 Result<hal_value> parse_value(hal_type_t type, std::string_view text);
 

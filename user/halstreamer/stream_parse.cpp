@@ -130,7 +130,9 @@ bool is_blank_line(std::string_view line)
 Result<std::vector<hal_fifo_value>> parse_stream_line(std::string_view cfg, std::string_view line)
 {
     std::vector<std::string> fields = split_fields(line);
-    if (fields.size() != cfg.size())
+    // LinuxCNC's halstreamer reads the fields it needs and ignores the rest (a trailing
+    // "# comment", extra columns); too few is an error.
+    if (fields.size() < cfg.size())
         return Error{-EINVAL, "expected " + std::to_string(cfg.size()) + " values (cfg '" +
                                   std::string(cfg) + "'), found " + std::to_string(fields.size())};
     std::vector<hal_fifo_value> values(cfg.size());

@@ -93,8 +93,12 @@ Reply handle_request(ModuleHost& host, std::string_view line)
         auto r = host.load(name, *args);
         return r ? ok_reply() : error_reply(r.error().code, r.error().message);
     }
+    if (verb == "msglevel" && rest.size() == 1 && rest[0] >= '0' && rest[0] <= '5') {
+        rtapi_set_msg_level(rest[0] - '0');
+        return ok_reply();
+    }
     std::string shown = verb.substr(0, 32);
-    if (verb == "ping" || verb == "list" || verb == "shutdown" || verb == "unload" ||
+    if (verb == "msglevel" || verb == "ping" || verb == "list" || verb == "shutdown" || verb == "unload" ||
         verb == "load")
         return error_reply(-EINVAL, "rtapi_app: wrong arguments for '" + shown + "'");
     return error_reply(-EINVAL, "rtapi_app: unknown request '" + shown + "'");

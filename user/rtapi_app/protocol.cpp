@@ -53,6 +53,14 @@ Result<std::string> socket_path()
     return "/tmp/rtapi-" + std::to_string(getuid()) + "-" + inst + ".sock";
 }
 
+Result<std::string> log_path()
+{
+    auto sock = socket_path();
+    if (!sock)
+        return sock.error();
+    return sock->substr(0, sock->size() - 5) + ".log";
+}
+
 Fd& Fd::operator=(Fd&& o) noexcept
 {
     if (this != &o) {

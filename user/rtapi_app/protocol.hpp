@@ -22,6 +22,8 @@ inline constexpr size_t max_reply = 64 * 1024;
 // instance that is empty, too long, or holds anything but [A-Za-z0-9._-] is refused
 // (it also names shared memory segments, where a '/' would be fatal).
 Result<std::string> socket_path();
+// Where a daemon started by halcmd writes its messages: the socket path + ".log".
+Result<std::string> log_path();
 
 // An owned file descriptor.
 class Fd {

@@ -74,6 +74,22 @@ Result<void> spawn_daemon()
         return Error{-errno, std::string("rtapi_app: pipe: ") + std::strerror(errno)};
     Fd status_in{status_pipe[0]}, status_out{status_pipe[1]};
     const char* argv[] = {"rtapi_app", nullptr};
+    // A daemon started by halcmd outlives it: holding halcmd's stderr open would make
+    // "halcmd loadrt m 2>&1 | cat" (or a Python subprocess) wait until the HAL is torn
+    // down. Its messages go to a log file beside the socket instead. halrun, which
+    // ends the session itself, asks for its stderr to be kept (RTAPI_APP_STDERR=keep),
+    // so realtime messages reach the terminal or the test result.
+    int log_fd = -1;
+    const char* keep = std::getenv("RTAPI_APP_STDERR");
+    if (!keep || std::strcmp(keep, "keep") != 0) {
+        auto log = rtapi_proto::log_path();
+        if (!log)
+            return log.error();
+        log_fd = open(log->c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC | O_NOFOLLOW, 0600);
+        if (log_fd < 0)
+            return Error{-errno, "rtapi_app: cannot open its log " + *log + ": " + std::strerror(errno)};
+    }
+    Fd log_guard{log_fd};
     pid_t child = fork();
     if (child < 0)
         return Error{-errno, std::string("rtapi_app: fork: ") + std::strerror(errno)};
@@ -89,6 +105,10 @@ Result<void> spawn_daemon()
             dup2(null_fd, STDOUT_FILENO);
             if (null_fd > STDERR_FILENO)
                 close(null_fd);
+        }
+        if (log_fd >= 0) {              // not halrun's own session: leave the caller's stderr
+            dup2(log_fd, STDERR_FILENO);
+            close(log_fd);
         }
         close_range(3, ~0U, CLOSE_RANGE_CLOEXEC);  // none of our descriptors outlive exec
         execv(app.c_str(), const_cast<char* const*>(argv));
@@ -207,6 +227,25 @@ Result<void> rtapi_unload(const std::string& module)
         return Error{-ENOENT, module + ": not loaded"};
     }
     return as_void(transact(std::move(*fd), "unload " + module, load_reply_timeout_ms));
+}
+
+Result<void> rtapi_start()
+{
+    auto fd = connect_or_start();
+    if (!fd)
+        return fd.error();
+    return as_void(transact(std::move(*fd), "ping", short_reply_timeout_ms));
+}
+
+Result<void> rtapi_set_msg_level(int level)
+{
+    auto fd = connect_daemon();
+    if (!fd) {
+        if (is_not_running(fd.error()))
+            return {};                   // nothing realtime runs: only the caller's level counts
+        return fd.error();
+    }
+    return as_void(transact(std::move(*fd), "msglevel " + std::to_string(level), short_reply_timeout_ms));
 }
 
 Result<std::vector<std::string>> rtapi_list()

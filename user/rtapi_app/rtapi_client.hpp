@@ -22,6 +22,12 @@ Result<void> rtapi_load(const std::string& module, const std::vector<std::string
 // last module goes.
 Result<void> rtapi_unload(const std::string& module);
 
+// Start the daemon if none answers ("realtime start"); it then waits for loadrt.
+Result<void> rtapi_start();
+
+// Set the daemon's RTAPI message level (halcmd "debug"); success when none runs.
+Result<void> rtapi_set_msg_level(int level);
+
 // Loaded modules in load order; empty when no daemon runs (none is started).
 Result<std::vector<std::string>> rtapi_list();
 

@@ -1,4 +1,4 @@
 halrun status lock
-halrun status mem | sed -E 's#[0-9]+/[0-9]+#USED/TOTAL#'
+halrun status mem | sed -E 's#(memory: +)[0-9]+/[0-9]+#\1USED/TOTAL#'
 halrun status bogus
 echo "exit $?"

@@ -114,7 +114,7 @@ TEST(CompParser, RejectsBadWordsNamingThem)
     EXPECT_EQ(parse_error("component m;\nparam w float x;\n"),
               "mything.comp:2: expected the param direction r or rw, found 'w'");
     EXPECT_EQ(parse_error("component m;\npin in double x;\n"),
-              "mything.comp:2: expected the pin type bit, float, s32 or u32, found 'double'");
+              "mything.comp:2: expected the pin type bit, float, s32, u32, s64 or u64, found 'double'");
     EXPECT_EQ(parse_error("component m;\npins in bit x;\n").substr(0, 40),
               "mything.comp:2: unknown declaration 'pin");
     EXPECT_EQ(parse_error("pin in bit x;\n"),

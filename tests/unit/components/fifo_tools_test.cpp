@@ -151,6 +151,13 @@ TEST(HalstreamerLine, WrongNumberOfValuesIsNamed)
     EXPECT_EQ(v.error().message, "expected 4 values (cfg 'ffbs'), found 3");
 }
 
+TEST(HalstreamerLine, ExtraFieldsAreIgnored)
+{
+    auto v = hal::parse_stream_line("fb", "1.5 1 # a comment\n");
+    ASSERT_TRUE(v);
+    ASSERT_EQ(v->size(), 2u);
+}
+
 TEST(HalstreamerLine, BadValuesAreNamed)
 {
     auto v = hal::parse_stream_line("fb", "1.0 2\n");

@@ -49,7 +49,17 @@ TEST_F(InstanceNames, CountOutOfRangeIsRefused)
     char* names[4] = {};
     EXPECT_EQ(instance_count("siggen", "num_chan", 17, names, 4, 16), -EINVAL);
     EXPECT_EQ(last_message, "siggen: num_chan=17 is out of range, must be 1..16\n");
-    EXPECT_EQ(instance_count("and2", "count", 0, names, 4, 64), -EINVAL);
+    EXPECT_EQ(instance_count("and2", "count", 65, names, 4, 64), -EINVAL);
+}
+
+TEST_F(InstanceNames, CountZeroAndEmptyNamesMeanTheDefault)
+{
+    char* none[4] = {};
+    EXPECT_EQ(instance_count("and2", "count", 0, none, 4, 64), 1);
+    char empty[] = "";
+    char* blank[4] = {empty};
+    EXPECT_EQ(instance_count("and2", "count", -1, blank, 4, 64), 1);
+    EXPECT_EQ(instance_count("and2", "count", 3, blank, 4, 64), 3);
 }
 
 TEST_F(InstanceNames, NamesGiveOneInstanceEach)

@@ -176,6 +176,15 @@ TEST(Continuation, TrailingBackslashJoinsLines)
     EXPECT_EQ(words(logical), (V{"net", "sig", "a", "b", "c"}));
 }
 
+TEST(Continuation, BackslashJoinsTheNextLineDirectly)
+{
+    std::string logical;
+    EXPECT_TRUE(join_continuation(logical, "loadrt m names=d1\\\n"));
+    EXPECT_FALSE(join_continuation(logical, ",d2\n"));
+    EXPECT_EQ(logical, "loadrt m names=d1,d2");
+    EXPECT_EQ(words(logical), (V{"loadrt", "m", "names=d1,d2"}));
+}
+
 TEST(Continuation, LineWithoutBackslashIsComplete)
 {
     std::string logical;

@@ -100,9 +100,12 @@ TEST(HalcmdOptions, HalrunOnlyOptionsAreRefused)
     EXPECT_NE(parse_err({"-I"}).find("halrun only"), std::string::npos);
 }
 
-TEST(HalcmdOptions, FileWithExtraArgumentIsAnError)
+TEST(HalcmdOptions, WordsAfterTheFileAreIgnored)
 {
-    EXPECT_NE(parse_err({"-f", "a.hal", "b.hal"}).find("'b.hal'"), std::string::npos);
+    Options o = parse_ok({"-f", "a.hal", "b.hal", "show"});
+    EXPECT_TRUE(o.from_file);
+    EXPECT_EQ(o.file, "a.hal");
+    EXPECT_TRUE(o.command.empty());
 }
 
 TEST(HalcmdOptions, DoubleDashEndsOptions)

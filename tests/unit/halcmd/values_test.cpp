@@ -10,14 +10,14 @@
 
 using namespace hal::halcmd;
 
-TEST(ParseValue, BitAcceptsTheSixSpellings)
+TEST(ParseValue, BitAcceptsLinuxCncSpellingsInAnyCase)
 {
-    for (const char* t : {"1", "TRUE", "true"}) {
+    for (const char* t : {"1", "TRUE", "true", "True", "on", "ON", "yes", "Yes"}) {
         auto v = parse_value(HAL_BIT, t);
         ASSERT_TRUE(v) << t;
         EXPECT_TRUE(v->b);
     }
-    for (const char* f : {"0", "FALSE", "false"}) {
+    for (const char* f : {"0", "FALSE", "false", "False", "off", "Off", "no", "NO"}) {
         auto v = parse_value(HAL_BIT, f);
         ASSERT_TRUE(v) << f;
         EXPECT_FALSE(v->b);
@@ -28,9 +28,10 @@ TEST(ParseValue, BadBitSaysValueAndAcceptedForms)
 {
     auto v = parse_value(HAL_BIT, "maybe");
     ASSERT_FALSE(v);
-    EXPECT_EQ(v.error().message, "'maybe' is not a valid bit value (use 0, 1, TRUE, FALSE, true or false)");
+    EXPECT_EQ(v.error().message, "'maybe' is not a valid bit value (use 1/0, true/false, on/off or yes/no, in any case)");
     EXPECT_FALSE(parse_value(HAL_BIT, "2"));
-    EXPECT_FALSE(parse_value(HAL_BIT, "True"));
+    EXPECT_FALSE(parse_value(HAL_BIT, "tru"));
+    EXPECT_FALSE(parse_value(HAL_BIT, ""));
 }
 
 TEST(ParseValue, S32DecimalAndHex)

@@ -152,4 +152,13 @@ TEST(RtapiModparam, ArrayErrorsChangeNothing)
     EXPECT_EQ(step_type[1], 2);
 }
 
+TEST(RtapiModparam, EmptyStringArrayIsOneEmptyString)
+{
+    // "names=": as the kernel's module_param_array leaves it; components then use
+    // their default count (LinuxCNC).
+    EXPECT_EQ(set("ctrl_type", ""), "ok");
+    EXPECT_STREQ(ctrl_type[0], "");
+    EXPECT_EQ(set("ctrl_type", "p,"), "ctrl_type: value 2 of 2 is empty");
+}
+
 }  // namespace

@@ -1,0 +1,2 @@
+halrun -k -f cmds.hal
+echo "exit $?"
