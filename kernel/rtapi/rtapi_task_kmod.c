@@ -160,12 +160,13 @@ static void task_sleep(struct rtapi_task *t)
 			}
 		}
 		if (schedule_hrtimeout_range_clock(&t->next, 0, HRTIMER_MODE_ABS,
-						   CLOCK_MONOTONIC) == 0)
-			break;	/* the timer expired: our release */
+						   CLOCK_MONOTONIC) == 0 ||
+		    ktime_before(t->next, ktime_get())) {
+			/* our release, unless paused meanwhile: then not before start/resume */
+			if (READ_ONCE(t->state) == TASK_PERIODIC && !READ_ONCE(t->resync))
+				break;
+		}
 		/* woken early (stop, pause, start or resume): look again */
-		if (ktime_before(t->next, ktime_get()) && READ_ONCE(t->state) == TASK_PERIODIC &&
-		    !READ_ONCE(t->resync))
-			break;
 	}
 	__set_current_state(TASK_RUNNING);
 	atomic64_inc(&t->cycles);

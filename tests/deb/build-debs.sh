@@ -26,8 +26,12 @@ mv "$out/files.new" "$out/files.list"
 rm -f "$out"/*.deb "$out"/*.changes "$out"/*.buildinfo
 
 echo "== dpkg-buildpackage (log: $out/build.log)"
+# Incremental: no clean before (-nc) keeps obj-*/ from the last run, but dh's
+# stamps go, so every step runs again and make rebuilds what changed.
+rm -f "$src"/debian/debhelper-build-stamp "$src"/debian/*.debhelper.log
+rm -rf "$src"/debian/hal "$src"/debian/hal-dev "$src"/debian/hal-dkms "$src"/debian/tmp
 (cd "$src" && DEB_BUILD_OPTIONS="parallel=$(nproc) ${DEB_BUILD_OPTIONS:-}" \
-	dpkg-buildpackage -b -us -uc) >"$out/build.log" 2>&1 ||
+	dpkg-buildpackage -b -nc -us -uc) >"$out/build.log" 2>&1 ||
 	{ tail -n 40 "$out/build.log" >&2; echo "build-debs: dpkg-buildpackage failed" >&2; exit 1; }
 mv "$out"/src/*.deb "$out"/src/*.changes "$out"/src/*.buildinfo "$out/"
 ls "$out"/*.deb

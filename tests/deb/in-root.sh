@@ -13,9 +13,13 @@ check() {	# check NAME COMMAND...
 
 # apt resolves our packages' dependencies from the mirror (the lists are fresh
 # from the root's creation; refresh them when the mirror moved on)
-install_debs() { apt-get install -y -q --no-install-recommends /tmp/debs/*.deb >/tmp/install.log 2>&1; }
-if install_debs || { apt-get update -qq && install_debs; }; then ok "apt-get install hal hal-dkms hal-dev"
-else bad "apt-get install"; tail -n 30 /tmp/install.log; echo "$pass passed, $fail failed"; exit 1; fi
+# hal and hal-dev first (quick checks), hal-dkms later (its postinst builds the
+# modules for both kernels).
+install_debs() { apt-get install -y -q --no-install-recommends "$@" >/tmp/install.log 2>&1; }
+if install_debs /tmp/debs/hal_*.deb /tmp/debs/hal-dev_*.deb ||
+	{ apt-get update -qq && install_debs /tmp/debs/hal_*.deb /tmp/debs/hal-dev_*.deb; }; then
+	ok "apt-get install hal hal-dev"
+else bad "apt-get install hal hal-dev"; tail -n 30 /tmp/install.log; echo "$pass passed, $fail failed"; exit 1; fi
 version=$(dpkg-query -W -f='${Version}' hal)
 
 check "hal group exists" getent group hal
@@ -119,7 +123,9 @@ HAL
 chown -R tester /tmp/ext
 check "both load and run" sh -c 'runuser -u tester -- env HAL_FLAVOR=sim halrun /tmp/ext/ext.hal >/tmp/ext.out 2>&1; printf "3\n6\n" | diff -u - /tmp/ext.out'
 
-# DKMS: the postinst built and installed the modules for both kernels
+# DKMS: the postinst builds and installs the modules for both kernels
+if install_debs /tmp/debs/hal-dkms_*.deb; then ok "apt-get install hal-dkms"
+else bad "apt-get install hal-dkms"; tail -n 30 /tmp/install.log; fi
 nmods=$(( $(awk '!/^[ \t]*(#|$)/' /usr/src/hal-$version/modules.manifest | wc -l) + 2 ))
 installed_for() {	# every module of the manifest, built for kernel $1
 	dkms status -m hal -v "$version" -k "$1" | grep -q ': installed' || { dkms status; return 1; }

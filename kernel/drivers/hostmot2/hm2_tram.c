@@ -65,11 +65,17 @@ int hm2_tram_allocate(struct hostmot2 *hm2)
 	return 0;
 }
 
+/* addr is meaningless for a batch (queued != 0) */
 static void io_failed(struct hostmot2 *hm2, const char *what, rtapi_u32 addr, int rc)
 {
-	if (!hm2->io_error)
+	int queued = what[0] == 'q';
+
+	if (!hm2->io_error && !queued)
 		HM2_ERR(hm2, "%s at 0x%04X failed (%d): stopping; clear %s.io_error to resume",
 			what, addr, rc, hm2->llio->name);
+	else if (!hm2->io_error)
+		HM2_ERR(hm2, "%s failed (%d): stopping; clear %s.io_error to resume", what, rc,
+			hm2->llio->name);
 	hm2->io_error = 1;
 	hm2->llio->needs_reset = 1;
 }

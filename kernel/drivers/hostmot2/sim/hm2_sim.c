@@ -11,7 +11,8 @@
  * onto IO pin NNN; encoders count from these) and hm2_sim.K.io.NNN.out (the level on
  * the connector), K = board index in this module. Reads are batched (queued and
  * sent as one request per cycle); hm2_sim.K.bus-words counts the 32-bit
- * words moved. */
+ * words moved; hm2_sim.K.bus-error TRUE makes every transfer fail (hostmot2's
+ * io_error recovery). */
 #include "rtapi.h"
 #include "rtapi_app.h"
 #include "rtapi_string.h"
@@ -44,6 +45,7 @@ struct sim_board {
 	struct hm2_sim_model model;
 	hal_bit_t **io_in, **io_out;	/* per IO pin */
 	hal_u32_t *bus_words;
+	hal_bit_t *bus_error;		/* in: every transfer fails (a cable pulled) */
 	struct queued_read rq[MAX_QUEUE];
 	int num_rq;
 	rtapi_u32 wq_addr[MAX_QUEUED_WRITE_WORDS], wq_val[MAX_QUEUED_WRITE_WORDS];
@@ -83,6 +85,12 @@ static int check(rtapi_u32 addr, int size)
 	return (size <= 0 || (size & 3) || (addr & 3) || addr + size > 0x10000) ? -EINVAL : 0;
 }
 
+/* the board's bus-error pin: a transport failure, as a pulled cable gives */
+static int bus_down(struct sim_board *b)
+{
+	return b->bus_error && *b->bus_error;
+}
+
 static int sim_read(struct hm2_llio *llio, rtapi_u32 addr, void *buf, int size)
 {
 	struct sim_board *b = llio->priv;
@@ -91,6 +99,8 @@ static int sim_read(struct hm2_llio *llio, rtapi_u32 addr, void *buf, int size)
 
 	if (check(addr, size))
 		return -EINVAL;
+	if (bus_down(b))
+		return -EIO;
 	sync_in(b);
 	for (i = 0; i < size / 4; i++)
 		w[i] = hm2_sim_model_read(&b->model, addr + 4 * i);
@@ -106,6 +116,8 @@ static int sim_write(struct hm2_llio *llio, rtapi_u32 addr, const void *buf, int
 
 	if (check(addr, size))
 		return -EINVAL;
+	if (bus_down(b))
+		return -EIO;
 	sync_in(b);
 	for (i = 0; i < size / 4; i++)
 		hm2_sim_model_write(&b->model, addr + 4 * i, w[i]);
@@ -132,6 +144,10 @@ static int sim_send_queued_reads(struct hm2_llio *llio)
 	struct sim_board *b = llio->priv;
 	int i, j;
 
+	if (bus_down(b)) {
+		b->num_rq = 0;
+		return -EIO;
+	}
 	sync_in(b);
 	for (i = 0; i < b->num_rq; i++) {
 		rtapi_u32 *w = b->rq[i].buf;
@@ -156,6 +172,10 @@ static int sim_send_queued_writes(struct hm2_llio *llio)
 
 	if (!b->num_wq)
 		return 0;
+	if (bus_down(b)) {
+		b->num_wq = 0;
+		return -EIO;
+	}
 	sync_in(b);
 	for (i = 0; i < b->num_wq; i++)
 		hm2_sim_model_write(&b->model, b->wq_addr[i], b->wq_val[i]);
@@ -191,6 +211,8 @@ static int export_board(struct sim_board *b, int k)
 	if (!b->io_in || !b->io_out)
 		return -ENOMEM;
 	rc = hal_pin_u32_newf(HAL_OUT, &b->bus_words, comp_id, "hm2_sim.%d.bus-words", k);
+	if (!rc)
+		rc = hal_pin_bit_newf(HAL_IN, &b->bus_error, comp_id, "hm2_sim.%d.bus-error", k);
 	for (i = 0; i < n && !rc; i++) {
 		rc = hal_pin_bit_newf(HAL_IN, &b->io_in[i], comp_id, "hm2_sim.%d.io.%03d.in", k, i);
 		if (!rc)
