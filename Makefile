@@ -49,7 +49,9 @@ kernel-test: build
 		$$(ls -d /usr/src/linux-headers-*-amd64 | sed 's|.*/linux-headers-||' | grep -v -- -rt- | sort -V | tail -1) \
 		$$(ls -d /usr/src/linux-headers-*-rt-amd64 | sed 's|.*/linux-headers-||' | sort -V | tail -1)
 
-test: unit-test hal-test $(if $(filter 0,$(KERNEL_TEST)),,kernel-test package-test fresh-clone-test)
+# package-test and fresh-clone-test are separate targets (not yet part of make test:
+# they have not been proven within CI's time budget).
+test: unit-test hal-test $(if $(filter 0,$(KERNEL_TEST)),,kernel-test)
 
 test-sim: unit-test hal-test
 
