@@ -67,7 +67,7 @@ TEST(HalInputMatch, IndexCountsMatchesInEventOrder)
 
 TEST(HalInputMatch, NamePhysIdAndPatterns)
 {
-    auto s = parse({"Vendor=046d Product=c00e", "serio*/input0", "1", "SpaceBall"});
+    auto s = parse({"Vendor=046d Product=c00e", "isa*/serio0/input0", "1", "SpaceBall"});
     ASSERT_TRUE(s);
     EXPECT_EQ(select_device((*s)[0], devices())->event_number, 3);
     EXPECT_EQ(select_device((*s)[1], devices())->event_number, 1);
