@@ -212,6 +212,50 @@ int hal_exit(int comp_id)
 	return 0;
 }
 
+#ifdef ULAPI
+/* Caller holds the HAL lock. 0 removed, -ENOENT, -EPERM (realtime), -EBUSY (alive). */
+static int comp_remove_dead_locked(struct hal_comp_rec *comp)
+{
+	if (comp->is_realtime)
+		return -EPERM;
+	if (comp->pid == (rtapi_s32)rtapi_getpid() || rtapi_process_exists(comp->pid))
+		return -EBUSY;
+	comp_delete_locked(comp);
+	return 0;
+}
+
+int hal_comp_remove_dead(int comp_id)
+{
+	struct hal_comp_rec *comp;
+	int rc;
+
+	if (!hal_seg)
+		return -EINVAL;
+	hal_lock();
+	comp = hal_comp_by_id(comp_id);
+	rc = comp ? comp_remove_dead_locked(comp) : -ENOENT;
+	hal_unlock();
+	return rc;
+}
+
+int hal_comps_remove_dead(void)
+{
+	struct hal_obj_hdr *o, *next;
+	int removed = 0;
+
+	if (!hal_seg)
+		return 0;
+	hal_lock();
+	for (o = hal_first(HAL_KIND_COMP); o; o = next) {
+		next = hal_next(o);
+		if (comp_remove_dead_locked((struct hal_comp_rec *)o) == 0)
+			removed++;
+	}
+	hal_unlock();
+	return removed;
+}
+#endif
+
 int hal_exit_module_comps(const char *module)
 {
 	struct hal_obj_hdr *o, *next;

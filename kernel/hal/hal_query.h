@@ -142,6 +142,14 @@ struct hal_counts {
 };
 int hal_object_counts(struct hal_counts *out);
 
+/* Crash clean-up: remove userspace component 'comp_id' if its process no longer
+ * exists (it died without hal_exit): its pins are unlinked and deleted, its memory
+ * returned. 0 removed, -ENOENT no such component, -EPERM realtime, -EBUSY the process
+ * is alive. No message. The kernel flavor will route this through hal_lib.ko's ioctl. */
+int hal_comp_remove_dead(int comp_id);
+/* hal_comp_remove_dead() for every userspace component; returns how many were removed. */
+int hal_comps_remove_dead(void);
+
 bool hal_threads_running(void);
 /* Base period set by the first thread, 0 if none. */
 long long hal_base_period(void);

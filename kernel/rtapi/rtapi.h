@@ -159,6 +159,11 @@ void rtapi_release_region(unsigned long base, unsigned long int size);
 
 /* Process id of the caller (userspace), 0 in the kernel. */
 long rtapi_getpid(void);
+#ifndef __KERNEL__
+/* Does process 'pid' still exist? Userspace only: HAL uses it to find userspace
+ * components whose process died without hal_exit() (crash, kill -9). */
+bool rtapi_process_exists(long pid);
+#endif
 
 /* --- non-realtime helper used by HAL to wait for threads to finish a cycle --- */
 void rtapi_sleep_ns(long long nsec);	/* init/cleanup/user code only */

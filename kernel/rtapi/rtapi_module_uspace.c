@@ -2,7 +2,9 @@
 /* rtapi_module_uspace.c - rtapi_init/rtapi_exit (rtapi_init(3rtapi), rtapi_exit(3rtapi))
  * for the simulated-realtime flavor: a per-process table of module names. Ids are
  * only meaningful inside the process that got them. */
+#include <errno.h>
 #include <pthread.h>
+#include <signal.h>
 #include <string.h>
 #include <unistd.h>
 #include "rtapi.h"
@@ -69,4 +71,10 @@ int rtapi_exit(int module_id)
 long rtapi_getpid(void)
 {
 	return (long)getpid();
+}
+
+bool rtapi_process_exists(long pid)
+{
+	/* EPERM: it exists but belongs to another user; only ESRCH means gone */
+	return pid > 0 && (kill((pid_t)pid, 0) == 0 || errno != ESRCH);
 }

@@ -142,9 +142,11 @@ Result<void> wait_until_ready(int pid, const std::string& program, const std::st
         if (hal_find_comp(name.c_str(), &c) == 0 && c.is_ready)
             return ok();
         int status;
-        if (waitpid(pid, &status, WNOHANG) == pid)
+        if (waitpid(pid, &status, WNOHANG) == pid) {
+            remove_dead_user_components();     // what it made before dying must not stay behind
             return Error{-ECHILD, "loadusr: '" + program + "' " + describe_status(status) +
                                       " before component '" + name + "' became ready"};
+        }
         if (std::chrono::steady_clock::now() > deadline)
             return Error{-ETIMEDOUT, "loadusr: waited " + std::to_string(ready_timeout.count()) +
                                          " s for component '" + name + "' to become ready; giving up"};
@@ -153,6 +155,15 @@ Result<void> wait_until_ready(int pid, const std::string& program, const std::st
 }
 
 }  // namespace
+
+void remove_dead_user_components()
+{
+    // A child of ours that died is a zombie until reaped, and a zombie still "exists".
+    // (-w and -W wait for their own child within one command, so nothing is stolen.)
+    while (waitpid(-1, nullptr, WNOHANG) > 0) {
+    }
+    hal_comps_remove_dead();
+}
 
 Result<void> cmd_loadrt(Session& s, Args args)
 {
@@ -185,6 +196,7 @@ Result<void> cmd_loadusr(Session& s, Args args)
     if (!flags)
         return flags.error();
     std::vector<std::string> argv(args.begin() + static_cast<long>(flags->program), args.end());
+    remove_dead_user_components();       // a crashed instance's name may be reused
     auto pid = spawn(argv);
     if (!pid)
         return pid.error();
@@ -226,8 +238,7 @@ Result<void> unload_user_components(Session* s, const std::string& name)
             std::this_thread::sleep_for(poll_interval);
         }
         // The process died without hal_exit(): remove what it left behind.
-        if (hal_find_comp(c.name, &now) == 0 && now.id == c.id)
-            hal_exit(c.id);
+        hal_comp_remove_dead(c.id);
         if (s)
             s->info("Userspace component '" + std::string(c.name) + "' unloaded");
     }

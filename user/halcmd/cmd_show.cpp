@@ -271,6 +271,7 @@ Result<void> cmd_show(Session& s, Args args)
             pats.erase(pats.begin());
         }
     }
+    remove_dead_user_components();   // a crashed userspace component is not shown as if alive
     Snapshot h = take_snapshot();
     bool script = s.script_mode();
     bool all = item == Item::all;

@@ -79,5 +79,8 @@ Result<void> cmd_setexact(Session&, Args);
 // Shared by unloadusr/unload and halrun's teardown: SIGTERM userspace components
 // ("all" or one name) and wait (bounded) until they are gone.
 Result<void> unload_user_components(Session* s, const std::string& name);
+// Crash clean-up (show, loadusr): reap our dead children, then remove every userspace
+// component whose process is gone (hal_comps_remove_dead).
+void remove_dead_user_components();
 
 }  // namespace hal::halcmd
