@@ -26,6 +26,11 @@ int hal_exit_threads(void);
 /* Threads that exist now (the host keeps running while any do). */
 int hal_thread_count(void);
 
+/* Call 'cb' for each thread with its period and the periods it missed since it was
+ * created, so the host can warn when they grow. Returns how many, or -errno. */
+int hal_thread_overruns(void (*cb)(const char *name, long long period_ns,
+				   unsigned long long overruns, void *ctx), void *ctx);
+
 #ifdef __cplusplus
 }
 #endif

@@ -12,7 +12,7 @@
 
 #define HAL_KEY 0x48414c32		/* "HAL2": RTAPI shmem key of the segment */
 #define HAL_SEGMENT_SIZE (64u << 20)	/* sparse in userspace; holds ~100k pins */
-#define HAL_LAYOUT_VERSION 3
+#define HAL_LAYOUT_VERSION 4
 #define HAL_SEG_MAGIC 0x48414c21
 #define HAL_HASH_BUCKETS 65536u		/* power of two */
 #define HAL_ALIGN 8u
@@ -143,8 +143,10 @@ struct hal_thread_rec {
 	rtapi_u32 last_entry_off;
 	rtapi_u64 cycles;	/* completed cycles: written by the thread only */
 	rtapi_u64 run_ns;	/* time spent in functions: written by the thread only */
+	rtapi_u64 overruns;	/* periods missed since creation: written by the thread only */
+	hal_s32_t *overruns_ptr;/* pin <name>.overruns (saturates), for a watchdog */
 };
-_Static_assert(sizeof(struct hal_thread_rec) == 152, "segment layout changed: bump HAL_LAYOUT_VERSION");
+_Static_assert(sizeof(struct hal_thread_rec) == 168, "segment layout changed: bump HAL_LAYOUT_VERSION");
 
 /* The segment starts with this header. */
 struct hal_seg_hdr {
