@@ -20,6 +20,12 @@ void hal_set_load_context(const char *module, const char *args);
  * rtapi_app_main() failed and left some behind). Returns how many were removed. */
 int hal_exit_module_comps(const char *module);
 
+/* Realtime components plus threads in the segment (mapping it if needed). A host
+ * that has not loaded anything yet finds only what a host before it left behind:
+ * the simulated flavor's rtapi_app refuses to load on top of that (issue 19, item 2).
+ * Returns the count or -errno. */
+int hal_realtime_object_count(void);
+
 /* Delete every thread (their tasks stop first): when the realtime host shuts
  * down, since threads outlive the modules that created them. Returns how many. */
 int hal_exit_threads(void);

@@ -65,8 +65,22 @@ bool is_text(std::string_view s)
     return true;
 }
 
-// Dispatch one request line (already checked to be text).
-Reply handle_request(ModuleHost& host, std::string_view line)
+// Before this rtapi_app loads its first module: realtime objects already in the HAL
+// belong to a host that died (we hold the instance lock), and no longer run.
+Reply refuse_orphans()
+{
+    int n = hal_realtime_object_count();
+    if (n <= 0)
+        return Reply{};
+    return error_reply(-EEXIST, "rtapi_app: the HAL still holds " + std::to_string(n) +
+                                    " realtime object" + (n == 1 ? "" : "s") +
+                                    " of a realtime host that died; clean up with 'halrun -U', "
+                                    "then load again");
+}
+
+// Dispatch one request line (already checked to be text). 'is_fresh': nothing
+// loaded by this process yet.
+Reply handle_request(ModuleHost& host, std::string_view line, bool& is_fresh)
 {
     auto sp = line.find(' ');
     std::string verb(line.substr(0, sp));
@@ -97,6 +111,11 @@ Reply handle_request(ModuleHost& host, std::string_view line)
         auto args = parse_module_args(name, joined);
         if (!args)
             return error_reply(args.error().code, args.error().message);
+        if (is_fresh) {
+            if (Reply refused = refuse_orphans(); !refused.text.empty())
+                return refused;
+            is_fresh = false;
+        }
         auto r = host.load(name, *args);
         return r ? ok_reply() : error_reply(r.error().code, r.error().message);
     }
@@ -116,7 +135,7 @@ bool is_owner(int fd)
 }
 
 // Check and answer one request that Clients has read.
-Reply answer(ModuleHost& host, const rtapi_proto::ReadResult& in)
+Reply answer(ModuleHost& host, const rtapi_proto::ReadResult& in, bool& is_fresh)
 {
     switch (in.end) {
     case rtapi_proto::ReadEnd::line:
@@ -137,7 +156,7 @@ Reply answer(ModuleHost& host, const rtapi_proto::ReadResult& in)
     if (!is_text(in.data))
         return error_reply(-EPROTO, "rtapi_app: request is not a line of text");
     try {
-        return handle_request(host, in.data);
+        return handle_request(host, in.data, is_fresh);
     } catch (const std::exception& e) {
         return error_reply(-EIO, std::string("rtapi_app: internal error: ") + e.what());
     }
@@ -256,6 +275,7 @@ int run_daemon()
     ModuleHost host(module_dir());
     Clients clients(max_clients, request_timeout_ms);
     OverrunWatch overruns;
+    bool is_fresh = true;
     bool is_listening = true;
     std::vector<pollfd> fds;
     while (!stop_signal && is_listening) {
@@ -270,7 +290,7 @@ int run_daemon()
             continue;  // EINTR: look at stop_signal
         auto now = Clients::Clock::now();
         for (auto& done : clients.collect(fds, 1, now)) {
-            Reply reply = answer(host, done.in);
+            Reply reply = answer(host, done.in, is_fresh);
             if (reply.should_exit) {
                 release_names(*path, lock_path);  // before the client hears "ok"
                 is_listening = false;
