@@ -136,19 +136,21 @@ static void holder_name(int pid, char *name, size_t size)
 	name[strcspn(name, "\n")] = '\0';
 }
 
+/* A warning, not an error: halcmd shows warnings at once, but keeps a command's errors
+ * until it ends, which a blocked command never would. */
 static void say_waiting(unsigned long word)
 {
 	int pid = rtapi_mutex_word_pid(word);
 	char name[32];
 
 	if (pid == 0) {
-		rtapi_print_msg(RTAPI_MSG_ERR, "rtapi: still waiting for a lock after %lld s; its "
+		rtapi_print_msg(RTAPI_MSG_WARN, "rtapi: still waiting for a lock after %lld s; its "
 				"holder is not recorded (realtime code?); if nothing progresses, run "
 				"'halrun -U'\n", RTAPI_MUTEX_WARN_NS / 1000000000LL);
 		return;
 	}
 	holder_name(pid, name, sizeof(name));
-	rtapi_print_msg(RTAPI_MSG_ERR, "rtapi: still waiting for the HAL lock after %lld s: it is "
+	rtapi_print_msg(RTAPI_MSG_WARN, "rtapi: still waiting for the HAL lock after %lld s: it is "
 			"held by process %d (%s); if that process is stuck, end it (kill %d) and "
 			"this one continues\n", RTAPI_MUTEX_WARN_NS / 1000000000LL, pid, name, pid);
 }
