@@ -3,7 +3,7 @@
 rtapi_app_pid() {
 	for p in /proc/[0-9]*; do
 		[ "$(cat "$p/comm" 2>/dev/null)" = rtapi_app ] || continue
-		tr '\0' '\n' < "$p/environ" 2>/dev/null | grep -qx "RTAPI_INSTANCE=$RTAPI_INSTANCE" &&
+		{ tr '\0' '\n' < "$p/environ"; } 2>/dev/null | grep -qx "RTAPI_INSTANCE=$RTAPI_INSTANCE" &&
 			echo "${p#/proc/}" && return 0
 	done
 	return 1

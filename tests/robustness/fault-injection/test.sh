@@ -21,7 +21,7 @@ delay_ms() { echo $(( ($1 * 7919 + 104729) % 600 )); }
 recovered=0
 round=1
 while [ $round -le "$rounds" ]; do
-	halrun -U
+	halrun -U >/dev/null 2>&1
 	halcmd -f "$big" >/dev/null 2>&1 &
 	victim=$!
 	ms=$(delay_ms $round)
@@ -42,7 +42,7 @@ while [ $round -le "$rounds" ]; do
 	fi
 	# ... and after the clean-up it says, everything works again.
 	if [ $ok = yes ]; then
-		timeout 30 halrun -U
+		timeout 30 halrun -U >/dev/null 2>&1
 		if ! timeout 30 halcmd loadrt and2 || ! timeout 30 halcmd net x and2.0.out and2.0.in0; then
 			ok=no
 		fi
