@@ -81,3 +81,38 @@ install: build
 
 clean:
 	rm -rf $(BUILD)
+
+# --- Robustness (issue 19): a sanitizer build and libFuzzer targets --------------
+# sanitize-test: ASan + UBSan build of everything (own tree, same ccache) running the
+# unit tests and the simulated-flavor HAL-level suite, no suppressions. UBSan findings
+# abort (-fno-sanitize-recover), so they fail the tests that hit them.
+# fuzz-smoke: every fuzz target for FUZZ_SECONDS;
+# fuzz: the same for FUZZ_LONG_SECONDS each, keeping the corpus in build-fuzz/corpus.
+SAN_BUILD ?= build-asan
+FUZZ_BUILD ?= build-fuzz
+FUZZ_SECONDS ?= 15
+FUZZ_LONG_SECONDS ?= 600
+SAN_ENV = ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=0 \
+	UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+
+.PHONY: sanitize-test fuzz-build fuzz-smoke fuzz
+
+sanitize-test:
+	@$(MAKE) --no-print-directory deps
+	cmake -S . -B $(SAN_BUILD) -DHAL_SANITIZE=ON $(CMAKE_FLAGS)
+	cmake --build $(SAN_BUILD) -j$(JOBS)
+	cd $(SAN_BUILD) && $(SAN_ENV) ctest --output-on-failure -j$(JOBS)
+	$(SAN_ENV) HAL_TEST_TIMEOUT=300 tests/run-hal-tests.sh --build $(SAN_BUILD) --flavor sim -j$(JOBS)
+
+fuzz-build:
+	@scripts/fuzz-deps
+	cmake -S tests/fuzz -B $(FUZZ_BUILD) -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++
+	cmake --build $(FUZZ_BUILD) -j$(JOBS)
+
+fuzz-smoke: fuzz-build
+	tests/fuzz/run-fuzz.sh $(FUZZ_BUILD) $(FUZZ_SECONDS)
+
+fuzz: fuzz-build
+	tests/fuzz/run-fuzz.sh $(FUZZ_BUILD) $(FUZZ_LONG_SECONDS)
+
+# Not yet part of `make test`: neither has been run within CI's time budget.

@@ -279,6 +279,23 @@ int hal_exit_module_comps(const char *module)
 	return removed;
 }
 
+int hal_realtime_object_count(void)
+{
+	struct hal_obj_hdr *o;
+	int n, err;
+
+	err = hal_segment_map();
+	if (err)
+		return err;
+	hal_lock();
+	n = (int)hal_seg->count[HAL_KIND_THREAD];
+	for (o = hal_first(HAL_KIND_COMP); o; o = hal_next(o))
+		if (((struct hal_comp_rec *)o)->is_realtime)
+			n++;
+	hal_unlock();
+	return n;
+}
+
 int hal_ready(int comp_id)
 {
 	struct hal_comp_rec *comp;

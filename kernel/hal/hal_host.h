@@ -20,11 +20,22 @@ void hal_set_load_context(const char *module, const char *args);
  * rtapi_app_main() failed and left some behind). Returns how many were removed. */
 int hal_exit_module_comps(const char *module);
 
+/* Realtime components plus threads in the segment (mapping it if needed). A host
+ * that has not loaded anything yet finds only what a host before it left behind:
+ * the simulated flavor's rtapi_app refuses to load on top of that (issue 19, item 2).
+ * Returns the count or -errno. */
+int hal_realtime_object_count(void);
+
 /* Delete every thread (their tasks stop first): when the realtime host shuts
  * down, since threads outlive the modules that created them. Returns how many. */
 int hal_exit_threads(void);
 /* Threads that exist now (the host keeps running while any do). */
 int hal_thread_count(void);
+
+/* Call 'cb' for each thread with its period and the periods it missed since it was
+ * created, so the host can warn when they grow. Returns how many, or -errno. */
+int hal_thread_overruns(void (*cb)(const char *name, long long period_ns,
+				   unsigned long long overruns, void *ctx), void *ctx);
 
 #ifdef __cplusplus
 }

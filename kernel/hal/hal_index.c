@@ -125,11 +125,24 @@ static int check_name(enum hal_kind kind, const char *name)
 				hal_kind_name(kind), name, HAL_NAME_LEN);
 		return -EINVAL;
 	}
+	/* The name is not echoed: it may hold terminal escape sequences. */
 	for (p = name; *p; p++) {
-		if (*p <= ' ' || *p == 0x7f) {
-			rtapi_print_msg(RTAPI_MSG_ERR,
-					"%s name '%s' contains whitespace or a control character\n",
-					hal_kind_name(kind), name);
+		unsigned char c = (unsigned char)*p;
+
+		if (c == ' ' || c == '\t') {
+			rtapi_print_msg(RTAPI_MSG_ERR, "%s name contains whitespace (at position %d)\n",
+					hal_kind_name(kind), (int)(p - name) + 1);
+			return -EINVAL;
+		}
+		if (c < ' ' || c == 0x7f) {
+			rtapi_print_msg(RTAPI_MSG_ERR, "%s name contains control character 0x%02x "
+					"(at position %d)\n", hal_kind_name(kind), c, (int)(p - name) + 1);
+			return -EINVAL;
+		}
+		if (c > 0x7f) {
+			rtapi_print_msg(RTAPI_MSG_ERR, "%s name contains a non-ASCII byte 0x%02x (at "
+					"position %d): HAL names are ASCII\n", hal_kind_name(kind), c,
+					(int)(p - name) + 1);
 			return -EINVAL;
 		}
 	}

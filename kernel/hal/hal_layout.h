@@ -162,8 +162,10 @@ struct hal_thread_rec {
 	rtapi_u32 last_entry_off;
 	rtapi_u64 cycles;	/* completed cycles: written by the thread only */
 	rtapi_u64 run_ns;	/* time spent in functions: written by the thread only */
+	rtapi_u64 overruns;	/* periods missed since creation: written by the thread only */
+	hal_s32_t *overruns_ptr;/* pin <name>.overruns (saturates), for a watchdog */
 };
-_Static_assert(sizeof(struct hal_thread_rec) == 152, "segment layout changed: bump HAL_LAYOUT_VERSION");
+_Static_assert(sizeof(struct hal_thread_rec) == 168, "segment layout changed: bump HAL_LAYOUT_VERSION");
 
 /* The segment starts with this header. */
 struct hal_seg_hdr {

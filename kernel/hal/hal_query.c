@@ -58,28 +58,32 @@ static void copy_name(char *dst, const char *src)
 	rtapi_snprintf(dst, HAL_NAME_LEN + 1, "%s", src);
 }
 
-static void read_value(union hal_value *v, int type, const volatile union hal_data *d)
+/* A value is read and written through a pointer to its own type, never as a union
+ * hal_data member: a parameter is only as aligned as its type (a hal_s32_t inside a
+ * component's struct may sit at 4 bytes), and an access through the 8-byte union
+ * type at such an address is undefined behaviour (issue 19, item 10). */
+static void read_value(union hal_value *v, int type, const volatile void *d)
 {
 	v->f = 0;
 	switch (type) {
-	case HAL_BIT: v->b = d->b; break;
-	case HAL_S32: v->s = d->s; break;
-	case HAL_U32: v->u = d->u; break;
-	case HAL_S64: v->ls = (long long)rtapi_load_u64(&d->raw); break;
-	case HAL_U64: v->lu = rtapi_load_u64(&d->raw); break;
-	default: v->f = d->f; break;
+	case HAL_BIT: v->b = *(const volatile hal_bit_t *)d; break;
+	case HAL_S32: v->s = *(const volatile hal_s32_t *)d; break;
+	case HAL_U32: v->u = *(const volatile hal_u32_t *)d; break;
+	case HAL_S64: v->ls = (long long)rtapi_load_u64((const volatile rtapi_u64 *)d); break;
+	case HAL_U64: v->lu = rtapi_load_u64((const volatile rtapi_u64 *)d); break;
+	default: v->f = *(const volatile hal_float_t *)d; break;
 	}
 }
 
-static void write_value(volatile union hal_data *d, int type, const union hal_value *v)
+static void write_value(volatile void *d, int type, const union hal_value *v)
 {
 	switch (type) {
-	case HAL_BIT: d->b = v->b; break;
-	case HAL_S32: d->s = v->s; break;
-	case HAL_U32: d->u = v->u; break;
-	case HAL_S64: rtapi_store_u64(&d->raw, (rtapi_u64)v->ls); break;
-	case HAL_U64: rtapi_store_u64(&d->raw, v->lu); break;
-	default: d->f = v->f; break;
+	case HAL_BIT: *(volatile hal_bit_t *)d = v->b; break;
+	case HAL_S32: *(volatile hal_s32_t *)d = v->s; break;
+	case HAL_U32: *(volatile hal_u32_t *)d = v->u; break;
+	case HAL_S64: rtapi_store_u64((volatile rtapi_u64 *)d, (rtapi_u64)v->ls); break;
+	case HAL_U64: rtapi_store_u64((volatile rtapi_u64 *)d, v->lu); break;
+	default: *(volatile hal_float_t *)d = v->f; break;
 	}
 }
 
@@ -164,7 +168,7 @@ static void thread_info(struct hal_thread_rec *t, struct hal_thread_info *out)
 	out->tmax = t->tmax;
 	out->cycles = rtapi_load_u64(&t->cycles);
 	out->cpu_ns = rtapi_load_u64(&t->run_ns);
-	out->overruns = -1;	/* known only inside the task's own address space */
+	out->overruns = (long long)rtapi_load_u64(&t->overruns);
 }
 
 /* Each query walks one kind list under the lock; the callbacks copy and return. */

@@ -91,7 +91,7 @@ struct hal_thread_info {
 	__s32 tmax;
 	__u64 cycles;			/* completed cycles since creation */
 	__u64 cpu_ns;			/* thread CPU time spent in functions (bench) */
-	long long overruns;
+	long long overruns;		/* periods missed since creation (pin <name>.overruns) */
 };
 
 /* Iterate all objects of a kind, in no particular order (sort for display).

@@ -57,7 +57,8 @@ static int segment_ready(struct hal_seg_hdr *seg)
 	}
 	for (spins = 0; __atomic_load_n(&seg->init_state, __ATOMIC_ACQUIRE) != 2; spins++) {
 		if (spins > 2000) {
-			rtapi_print_msg(RTAPI_MSG_ERR, "HAL segment never finished initialising\n");
+			rtapi_print_msg(RTAPI_MSG_ERR, "HAL segment never finished initialising (the "
+					"process creating it was killed?); remove it with 'halrun -U'\n");
 			return -EAGAIN;
 		}
 		rtapi_sleep_ns(1000000);

@@ -41,6 +41,18 @@ static void run_functions(struct hal_thread_rec *t)
 	__atomic_add_fetch(&t->cycle_seq, 1, __ATOMIC_ACQ_REL);	/* even: idle */
 }
 
+/* Publish the periods the task missed (counted by RTAPI in rtapi_task_wait()) in the
+ * record, for "show thread" and the host's warnings, and on the pin, for a watchdog. */
+static void note_overruns(struct hal_thread_rec *t)
+{
+	long long n = rtapi_task_overruns(t->task_id);
+
+	if (n <= 0 || (rtapi_u64)n == t->overruns)
+		return;
+	rtapi_store_u64(&t->overruns, (rtapi_u64)n);
+	*t->overruns_ptr = n > 0x7fffffffLL ? 0x7fffffff : (hal_s32_t)n;
+}
+
 static void hal_thread_task(void *arg)
 {
 	struct hal_thread_rec *t = arg;
@@ -49,6 +61,7 @@ static void hal_thread_task(void *arg)
 		if (__atomic_load_n(&hal_seg->threads_running, __ATOMIC_ACQUIRE))
 			run_functions(t);
 		rtapi_task_wait();
+		note_overruns(t);
 	}
 }
 
@@ -92,6 +105,27 @@ static long long thread_period(const char *name, unsigned long period)
 	return (long long)n * base;
 }
 
+static int overruns_pin_new(const char *name, struct hal_thread_rec *t)
+{
+	char buf[HAL_NAME_LEN + 12];
+
+	rtapi_snprintf(buf, sizeof(buf), "%s.overruns", name);
+	return hal_pin_new_locked(buf, HAL_S32, HAL_OUT, (void **)&t->overruns_ptr, 0);
+}
+#endif
+
+static void overruns_pin_delete(const char *name)
+{
+	char buf[HAL_NAME_LEN + 12];
+	struct hal_pin_rec *pin;
+
+	rtapi_snprintf(buf, sizeof(buf), "%s.overruns", name);
+	pin = hal_find(HAL_KIND_PIN, buf);
+	if (pin)
+		hal_pin_delete_locked(pin);
+}
+
+#ifdef RTAPI
 static int create_locked(const char *name, unsigned long period, int uses_fp)
 {
 	struct hal_thread_rec *t;
@@ -117,6 +151,9 @@ static int create_locked(const char *name, unsigned long period, int uses_fp)
 	err = hal_timing_objects_new(name, &t->time_ptr, &t->tmax, 0);
 	if (err)
 		goto undo_record;
+	err = overruns_pin_new(name, t);
+	if (err)
+		goto undo_timing;
 	t->task_id = rtapi_task_new(hal_thread_task, t, prio, 0, uses_fp);
 	if (t->task_id < 0) {
 		err = t->task_id;
@@ -133,6 +170,7 @@ static int create_locked(const char *name, unsigned long period, int uses_fp)
 undo_task:
 	rtapi_task_delete(t->task_id);
 undo_timing:
+	overruns_pin_delete(name);
 	hal_timing_objects_delete(name);
 undo_record:
 	hal_object_delete(&t->hdr);
@@ -179,6 +217,7 @@ void hal_thread_delete_locked(struct hal_thread_rec *t)
 		hal_free_block(hal_seg, e);
 	}
 	t->first_entry_off = 0;
+	overruns_pin_delete(t->hdr.name);
 	hal_timing_objects_delete(t->hdr.name);
 	hal_object_delete(&t->hdr);
 	hal_heap_compact(hal_seg);	/* its blocks were freed one by one: merge them */
@@ -222,6 +261,24 @@ int hal_thread_count(void)
 }
 
 #ifdef RTAPI
+int hal_thread_overruns(void (*cb)(const char *name, long long period_ns,
+				   unsigned long long overruns, void *ctx), void *ctx)
+{
+	struct hal_obj_hdr *o;
+	int n = 0;
+
+	if (!hal_seg)
+		return -EINVAL;
+	hal_lock();
+	for (o = hal_first(HAL_KIND_THREAD); o; o = hal_next(o), n++) {
+		struct hal_thread_rec *t = (struct hal_thread_rec *)o;
+
+		cb(t->hdr.name, t->period_ns, rtapi_load_u64(&t->overruns), ctx);
+	}
+	hal_unlock();
+	return n;
+}
+
 int hal_exit_threads(void)
 {
 	struct hal_obj_hdr *o;

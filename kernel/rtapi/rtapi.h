@@ -142,9 +142,11 @@ static inline int rtapi_mutex_try(unsigned long *mutex)
 	return __atomic_test_and_set(mutex, __ATOMIC_ACQUIRE) ? 1 : 0;
 }
 void rtapi_mutex_get(unsigned long *mutex);	/* blocks: never from a realtime task */
+/* Clears the whole word: the simulated flavor's rtapi_mutex_get() records its holder
+ * in the bytes above the one rtapi_mutex_try() sets. */
 static inline void rtapi_mutex_give(unsigned long *mutex)
 {
-	__atomic_clear(mutex, __ATOMIC_RELEASE);
+	__atomic_store_n(mutex, 0UL, __ATOMIC_RELEASE);
 }
 
 /* --- hardware I/O (rtapi_outb(3rtapi), rtapi_region(3rtapi)) --- */

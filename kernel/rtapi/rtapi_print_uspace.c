@@ -11,9 +11,10 @@
 
 #define RTAPI_PRINT_BUF 1024	/* longer messages are cut and end in "...\n" */
 
-/* Default RTAPI_MSG_ERR: INFO would flood every halcmd run; env RTAPI_MSG_LEVEL
+/* Default RTAPI_MSG_WARN: warnings (no SCHED_FIFO, missed periods, a lock taken over
+ * from a dead process) are what users must see; INFO would flood every halcmd run. Env RTAPI_MSG_LEVEL
  * (a number 0..5 or NONE/ERR/WARN/INFO/DBG/ALL) overrides it at program start. */
-static int msg_level = RTAPI_MSG_ERR;
+static int msg_level = RTAPI_MSG_WARN;
 static void default_handler(msg_level_t level, const char *msg);
 static rtapi_msg_handler_t msg_handler = default_handler;
 

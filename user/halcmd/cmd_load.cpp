@@ -9,6 +9,7 @@
 
 #include <cerrno>
 #include <chrono>
+#include <cstdio>
 #include <cstring>
 #include <thread>
 
@@ -154,6 +155,36 @@ Result<void> wait_until_ready(int pid, const std::string& program, const std::st
     }
 }
 
+// What the module host would refuse only vaguely ("request is not a line of text")
+// or misread (count=-1 is the components' "not given" value): issue 19, items 8, 9.
+Result<void> check_loadrt_args(const std::string& module, const std::vector<std::string>& margs)
+{
+    for (size_t i = 0; i < margs.size(); ++i) {
+        const std::string& a = margs[i];
+        for (size_t k = 0; k < a.size(); ++k) {
+            auto c = static_cast<unsigned char>(a[k]);
+            if (c >= 0x20 && c != 0x7f)
+                continue;
+            char hex[8];
+            std::snprintf(hex, sizeof(hex), "0x%02x", c);
+            return Error{-EINVAL, "loadrt " + module + ": argument " + std::to_string(i + 1) + " ('" +
+                                      a + "') contains " + (c ? std::string("control character ") + hex
+                                                               : std::string("a NUL byte")) +
+                                      " at position " + std::to_string(k + 1) +
+                                      "; module arguments are plain text"};
+        }
+        auto eq = a.find('=');
+        std::string name = a.substr(0, eq);
+        std::string value = eq == std::string::npos ? "" : a.substr(eq + 1);
+        if ((name == "count" || name == "num_chan") && value.size() > 1 && value[0] == '-' &&
+            value.find_first_not_of("0123456789", 1) == std::string::npos)
+            return Error{-EINVAL, "loadrt " + module + ": " + name + "=" + value +
+                                      " is negative; give a number of instances of at least 1, "
+                                      "or leave " + name + "= out for the default"};
+    }
+    return ok();
+}
+
 }  // namespace
 
 void remove_dead_user_components()
@@ -170,6 +201,8 @@ Result<void> cmd_loadrt(Session& s, Args args)
     if (auto r = require_unlocked(HAL_LOCK_LOAD, "loadrt"); !r)
         return r;
     std::vector<std::string> margs(args.begin() + 1, args.end());
+    if (auto r = check_loadrt_args(args[0], margs); !r)
+        return r;
     Result<void> r = rt_load(args[0], margs);
     if (!r)
         return Error{r.error().code, r.error().message};

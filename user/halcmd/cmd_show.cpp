@@ -211,6 +211,9 @@ void show_threads(const Snapshot& h, const Patterns& pats, bool script)
         }
         std::printf(thread_fmt, std::to_string(t.info.period_ns).c_str(), fp, t.info.name,
                     std::to_string(t.info.time).c_str(), std::to_string(t.info.tmax).c_str());
+        if (t.info.overruns > 0)  // only then: the usual layout stays as scripts know it
+            std::printf("%*smissed periods (overruns): %lld\n", thread_indent, "",
+                        t.info.overruns);
         int n = 1;
         for (const std::string& f : t.functs)
             std::printf("%*s%2d %s\n", thread_indent, "", n++, f.c_str());

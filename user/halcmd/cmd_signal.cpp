@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // cmd_signal.cpp - newsig, delsig, linkps, linksp, linkpp, unlinkp, net (halcmd(1)).
-// net checks every pin before changing anything, so a bad line leaves HAL as it was.
+// net checks every pin before changing anything and takes its links back if the core
+// still refuses one, so a bad line leaves HAL as it was.
 #include <cerrno>
 #include <cstring>
 
@@ -54,6 +55,21 @@ Result<void> check_net_pin(const std::string& sig, const std::string& pin, hal_t
         return Error{-EBUSY, "net " + sig + ": pin '" + pin + "' would be a second writer of signal '" + sig +
                                  "', which '" + writer + "' already drives"};
     return ok();
+}
+
+// Take back what a failed net did: unlink the pins it linked (those still on 'sig')
+// and delete the signal if the net created it (which also unlinks).
+void undo_net(const std::string& sig, const std::vector<std::string>& linked, bool created)
+{
+    if (created) {
+        hal_signal_delete(sig.c_str());
+        return;
+    }
+    for (const std::string& pin : linked) {
+        hal_pin_info p;
+        if (hal_find_pin(pin.c_str(), &p) == 0 && sig == p.signal)
+            hal_unlink(pin.c_str());
+    }
 }
 
 }  // namespace
@@ -153,14 +169,21 @@ Result<void> cmd_net(Session& s, Args args)
             return r;
         s.info("Signal '" + sig + "' created");
     }
+    // All or nothing (issue 19, item 7): the core may still refuse a link that the
+    // checks above passed (another process changed the HAL meanwhile, or a rule only
+    // the core knows); then the links this net made are taken back.
+    std::vector<std::string> linked;
     for (size_t i = 1; i < args.size(); i++) {
         if (sig == pins[i - 1].signal)
             continue;                     // already on this signal: nothing to do
-        if (auto r = link_pin(s, args[i], sig); !r) {
-            if (!exists)
-                hal_signal_delete(sig.c_str());   // undo the links made so far
+        auto r = s.check(hal_link(args[i].c_str(), sig.c_str()),
+                         "linking pin '" + args[i] + "' to signal '" + sig + "'");
+        if (!r) {
+            undo_net(sig, linked, !exists);
             return r;
         }
+        linked.push_back(args[i]);
+        s.info("Pin '" + args[i] + "' linked to signal '" + sig + "'");
     }
     return ok();
 }

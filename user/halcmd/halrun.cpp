@@ -10,6 +10,7 @@
 
 #include "commands.hpp"
 #include "hal_query.h"
+#include "input_text.hpp"
 #include "options.hpp"
 #include "hal/kmod.hpp"
 #include "realtime.hpp"
@@ -25,7 +26,7 @@ using namespace hal::halcmd;
 void complain(const std::string& msg)
 {
     std::fflush(stdout);
-    std::fprintf(stderr, "halrun: %s\n", msg.c_str());
+    std::fprintf(stderr, "halrun: %s\n", hal::halcmd::printable(msg).c_str());
 }
 
 std::string instance()

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "input_text.hpp"
 #include "options.hpp"
 #include "session.hpp"
 
@@ -13,7 +14,7 @@ int main(int argc, char** argv)
     std::vector<std::string> args(argv + 1, argv + argc);
     auto opts = hal::halcmd::parse_halcmd_options(args);
     if (!opts) {
-        std::fprintf(stderr, "halcmd: %s\n", opts.error().message.c_str());
+        std::fprintf(stderr, "halcmd: %s\n", hal::halcmd::printable(opts.error().message).c_str());
         return 1;
     }
     try {

@@ -90,6 +90,35 @@ bool rt_running()
     return hal::rtapi_running();
 }
 
+Result<void> rt_check_host()
+{
+    if (kernel_flavor())
+        return ok();  // the kernel is the host: it cannot die under the HAL
+    Snapshot h = take_snapshot();
+    std::string names;
+    size_t n = 0;
+    for (const hal_comp_info& c : h.comps) {
+        if (!c.is_realtime)
+            continue;
+        if (n++ < 3)
+            names += std::string(names.empty() ? "" : ", ") + c.name;
+    }
+    for (const ThreadEntry& t : h.threads) {
+        if (n++ < 3)
+            names += std::string(names.empty() ? "" : ", ") + t.info.name;
+    }
+    // rtapi_app listens before it creates anything, and unlinks its socket only
+    // after removing everything: realtime objects without a listener are orphans.
+    if (n == 0 || hal::rtapi_running())
+        return ok();
+    const char* inst = std::getenv("RTAPI_INSTANCE");
+    return Error{-EPIPE, "the realtime host (rtapi_app, RTAPI_INSTANCE=" +
+                             std::string(inst ? inst : "0") + ") has died, leaving " +
+                             std::to_string(n) + " realtime object" + (n == 1 ? "" : "s") +
+                             " (" + names + (n > 3 ? ", ..." : "") +
+                             ") that no longer run; clean up with 'halrun -U', then load again"};
+}
+
 Result<void> rt_shutdown()
 {
     if (kernel_flavor())

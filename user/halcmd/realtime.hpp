@@ -36,6 +36,11 @@ Result<void> rt_start();
 // True when realtime modules are loaded (kernel) / rtapi_app answers (sim).
 bool rt_running();
 
+// Simulated flavor, after attaching: an error when the HAL holds realtime components
+// or threads but their host, rtapi_app, is gone (killed): they no longer run, and
+// nothing but "halrun -U" can clear them (issue 19, item 2). The message says so.
+Result<void> rt_check_host();
+
 // After the last detach: unload everything, including hal_lib and rtapi (kernel),
 // or stop rtapi_app (sim).
 Result<void> rt_shutdown();

@@ -11,6 +11,7 @@
 
 #include "commands.hpp"
 #include "hal_query.h"
+#include "input_text.hpp"
 #include "realtime.hpp"
 
 namespace hal::halcmd {
@@ -72,7 +73,7 @@ void Session::on_message(msg_level_t level, const char* msg)
                                         : opts_.verbosity >= Verbosity::debug;
     if (show) {
         std::fflush(stdout);
-        std::fprintf(stderr, "%s\n", strip_newlines(msg).c_str());
+        std::fprintf(stderr, "%s\n", printable(strip_newlines(msg)).c_str());
     }
 }
 
@@ -100,7 +101,8 @@ void Session::report(const Error& e)
     if (e.message.empty() || opts_.verbosity == Verbosity::silent)
         return;                           // empty: already reported (e.g. inside "source")
     std::fflush(stdout);                  // keep stdout and stderr in order in one file
-    std::fprintf(stderr, "%s%s\n", where_.c_str(), e.message.c_str());
+    // Messages quote what the user typed: never let its bytes drive the terminal.
+    std::fprintf(stderr, "%s%s\n", printable(where_).c_str(), printable(e.message).c_str());
 }
 
 Result<void> Session::execute(std::vector<std::string> words)
@@ -126,7 +128,7 @@ Result<void> Session::execute(std::vector<std::string> words)
         for (const std::string& m : captured_)
             if (opts_.verbosity != Verbosity::silent) {
                 std::fflush(stdout);
-                std::fprintf(stderr, "%s%s\n", where_.c_str(), m.c_str());
+                std::fprintf(stderr, "%s%s\n", printable(where_).c_str(), printable(m).c_str());
             }
     }
     captured_.clear();
@@ -139,6 +141,15 @@ Result<void> Session::execute_line(std::string_view line)
     if (!words)
         return words.error();
     return execute(std::move(*words));
+}
+
+void Session::run_failed(const Error& e, const std::string& where, bool& ok)
+{
+    std::string saved = where_;
+    where_ = where;
+    report(e);
+    ok = false;
+    where_ = saved;
 }
 
 void Session::run_logged(std::string_view line, const std::string& where, bool& ok)
@@ -156,26 +167,46 @@ void Session::run_logged(std::string_view line, const std::string& where, bool& 
 bool Session::run_stream(std::FILE* in, const std::string& name)
 {
     bool ok = true;
-    char* buf = nullptr;
-    size_t cap = 0;
-    ssize_t n;
+    LineReader reader(in);
+    std::string physical;
     int line_no = 0;
     int first_line = 0;
     bool pending = false;                 // a continued logical line is being collected
     std::string logical;
-    while (!quit_ && (ok || opts_.keep_going) && (n = getline(&buf, &cap, in)) >= 0) {
+    auto where = [&] { return name + ":" + std::to_string(first_line) + ": "; };
+    while (!quit_ && (ok || opts_.keep_going) && reader.next(physical)) {
         line_no++;
         if (!pending)
             first_line = line_no;
-        pending = join_continuation(logical, std::string_view(buf, static_cast<size_t>(n)));
+        // Bytes are checked before anything reads the line as a C string.
+        if (auto r = check_line_text(physical); !r) {
+            run_failed(Error{r.error().code, (pending ? "line " + std::to_string(line_no) + ": " : "") +
+                                                 r.error().message},
+                       where(), ok);
+            logical.clear();
+            pending = false;
+            continue;
+        }
+        pending = join_continuation(logical, physical);
+        if (logical.size() > max_line_bytes) {
+            run_failed(Error{-E2BIG, "continued line longer than " + std::to_string(max_line_bytes) +
+                                         " bytes"},
+                       where(), ok);
+            logical.clear();
+            pending = false;
+            continue;
+        }
         if (pending)
             continue;
-        run_logged(logical, name + ":" + std::to_string(first_line) + ": ", ok);
+        run_logged(logical, where(), ok);
         logical.clear();
     }
     if (pending && !quit_ && (ok || opts_.keep_going))   // file ended inside a continuation
-        run_logged(logical, name + ":" + std::to_string(first_line) + ": ", ok);
-    std::free(buf);
+        run_logged(logical, where(), ok);
+    if (const Error* e = reader.error()) {   // never "end of file" in disguise
+        first_line = line_no + 1;
+        run_failed(*e, where(), ok);
+    }
     return ok;
 }
 
@@ -232,6 +263,10 @@ bool Session::start()
     attached_ = true;
     if (opts_.release_mutex)
         hal_release_mutex();
+    if (auto host = rt_check_host(); !host) {
+        report(host.error());
+        return false;
+    }
     return true;
 }
 

@@ -60,6 +60,7 @@ private:
     Result<void> execute_line(std::string_view line);
     void report(const Error& e);
     void run_logged(std::string_view line, const std::string& where, bool& ok);
+    void run_failed(const Error& e, const std::string& where, bool& ok);
 
     Options opts_;
     std::optional<IniFile> ini_;

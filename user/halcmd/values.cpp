@@ -5,6 +5,7 @@
 #include <fnmatch.h>
 
 #include <cctype>
+#include <cmath>
 #include <cerrno>
 #include <cstdint>
 #include <cstdio>
@@ -188,8 +189,15 @@ Result<hal_value> parse_value(hal_type_t type, std::string_view text)
         char* end = nullptr;
         errno = 0;
         double d = std::strtod(s.c_str(), &end);
-        if (s.empty() || std::isspace(static_cast<unsigned char>(s[0])) || *end != '\0' || errno == ERANGE)
-            return bad_value(text, "float", "use a number such as 2, -0.5, 1e-3 or 0x1p4");
+        // Finite values only (issue 19, item 9): nan and inf would spread through every
+        // component downstream, and 1e999 would become inf. A value too small to
+        // represent (1e-999) reads as the nearest double, as strtod rounds it.
+        bool overflow = errno == ERANGE && std::isinf(d);
+        if (s.empty() || std::isspace(static_cast<unsigned char>(s[0])) || end != s.c_str() + s.size() ||
+            overflow || !std::isfinite(d))
+            return bad_value(text, "float",
+                             "use a finite number such as 2, -0.5, 1e-3 or 0x1p4; nan, inf and "
+                             "values beyond +-1.7976931348623157e308 are refused");
         v.f = d;
         return v;
     }

@@ -22,7 +22,8 @@ const char* param_dir_name(hal_param_dir_t dir);              // "RO", "RW"
 // 1/0, true/false, on/off, yes/no in any case (RULINGS.md "bit values").
 std::optional<bool> parse_bit(std::string_view text);
 // bit: parse_bit(); s32/u32: decimal or 0x hex, range-checked;
-// float: a full strtod() match. The error says the value and what is accepted.
+// float: a full strtod() match of a finite value (no nan, inf or overflow like 1e999;
+// underflow like 1e-999 rounds to the nearest double). The error says the value and what is accepted.
 Result<hal_value> parse_value(hal_type_t type, std::string_view text);
 
 // TRUE/FALSE, decimal integers, floats via format_float().

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // daemon.cpp - the rtapi_app socket server: single instance per RTAPI_INSTANCE
 // (an flock()ed lock file), stale socket removal, signal-safe main loop, and the
-// request dispatcher. Garbage gets an error reply; nothing a client sends can
-// crash or stall it beyond request_timeout_ms.
+// request dispatcher. Connections are read concurrently (clients.hpp), requests
+// answered one at a time. Garbage gets an error reply; nothing a client sends can
+// crash it or stall another client.
 #include "daemon.hpp"
 
 #include <fcntl.h>
@@ -19,10 +20,13 @@
 #include <cstring>
 #include <exception>
 #include <string>
+#include <vector>
 
+#include "clients.hpp"
 #include "hal_host.h"
 #include "module_args.hpp"
 #include "module_host.hpp"
+#include "overrun_watch.hpp"
 #include "protocol.hpp"
 
 namespace hal {
@@ -32,6 +36,9 @@ using rtapi_proto::Fd;
 
 constexpr int request_timeout_ms = 3000;  // a client sends its line right after connecting
 constexpr int reply_timeout_ms = 3000;
+// Connections read at once; more wait in the listen backlog until one finishes
+// (each within request_timeout_ms), so no number of idle clients stalls the daemon.
+constexpr size_t max_clients = 64;
 
 volatile sig_atomic_t stop_signal = 0;  // set by on_signal(), read by the main loop
 
@@ -58,8 +65,22 @@ bool is_text(std::string_view s)
     return true;
 }
 
-// Dispatch one request line (already checked to be text).
-Reply handle_request(ModuleHost& host, std::string_view line)
+// Before this rtapi_app loads its first module: realtime objects already in the HAL
+// belong to a host that died (we hold the instance lock), and no longer run.
+Reply refuse_orphans()
+{
+    int n = hal_realtime_object_count();
+    if (n <= 0)
+        return Reply{};
+    return error_reply(-EEXIST, "rtapi_app: the HAL still holds " + std::to_string(n) +
+                                    " realtime object" + (n == 1 ? "" : "s") +
+                                    " of a realtime host that died; clean up with 'halrun -U', "
+                                    "then load again");
+}
+
+// Dispatch one request line (already checked to be text). 'is_fresh': nothing
+// loaded by this process yet.
+Reply handle_request(ModuleHost& host, std::string_view line, bool& is_fresh)
 {
     auto sp = line.find(' ');
     std::string verb(line.substr(0, sp));
@@ -90,6 +111,11 @@ Reply handle_request(ModuleHost& host, std::string_view line)
         auto args = parse_module_args(name, joined);
         if (!args)
             return error_reply(args.error().code, args.error().message);
+        if (is_fresh) {
+            if (Reply refused = refuse_orphans(); !refused.text.empty())
+                return refused;
+            is_fresh = false;
+        }
         auto r = host.load(name, *args);
         return r ? ok_reply() : error_reply(r.error().code, r.error().message);
     }
@@ -104,14 +130,17 @@ Reply handle_request(ModuleHost& host, std::string_view line)
     return error_reply(-EINVAL, "rtapi_app: unknown request '" + shown + "'");
 }
 
-// Read, check and answer one connection.
-Reply serve_connection(ModuleHost& host, int fd)
+// Only the daemon's owner may talk to it (DESIGN.md: the socket checks SO_PEERCRED).
+bool is_owner(int fd)
 {
     ucred peer{};
     socklen_t len = sizeof(peer);
-    if (getsockopt(fd, SOL_SOCKET, SO_PEERCRED, &peer, &len) != 0 || peer.uid != getuid())
-        return error_reply(-EPERM, "rtapi_app: only its owner may use this rtapi_app");
-    auto in = rtapi_proto::read_bounded(fd, rtapi_proto::max_request, request_timeout_ms, true);
+    return getsockopt(fd, SOL_SOCKET, SO_PEERCRED, &peer, &len) == 0 && peer.uid == getuid();
+}
+
+// Check and answer one request that Clients has read.
+Reply answer(ModuleHost& host, const rtapi_proto::ReadResult& in, bool& is_fresh)
+{
     switch (in.end) {
     case rtapi_proto::ReadEnd::line:
         break;
@@ -131,9 +160,25 @@ Reply serve_connection(ModuleHost& host, int fd)
     if (!is_text(in.data))
         return error_reply(-EPROTO, "rtapi_app: request is not a line of text");
     try {
-        return handle_request(host, in.data);
+        return handle_request(host, in.data, is_fresh);
     } catch (const std::exception& e) {
         return error_reply(-EIO, std::string("rtapi_app: internal error: ") + e.what());
+    }
+}
+
+// Accept every pending connection while there is room. Strangers get one error line.
+void accept_all(int listener, Clients& clients)
+{
+    while (!clients.full()) {
+        Fd conn{accept4(listener, nullptr, nullptr, SOCK_CLOEXEC | SOCK_NONBLOCK)};
+        if (!conn)
+            return;  // EAGAIN: none left (or a transient error: poll again)
+        if (!is_owner(conn.get())) {
+            Reply r = error_reply(-EPERM, "rtapi_app: only its owner may use this rtapi_app");
+            (void)rtapi_proto::write_all(conn.get(), r.text, reply_timeout_ms);
+            continue;
+        }
+        clients.add(std::move(conn), Clients::Clock::now());
     }
 }
 
@@ -167,14 +212,14 @@ Fd listen_on(const std::string& path)
         return Fd{};
     }
     std::memcpy(addr.sun_path, path.c_str(), path.size() + 1);
-    Fd fd{socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0)};
+    Fd fd{socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC | SOCK_NONBLOCK, 0)};
     if (!fd)
         return Fd{};
     unlink(path.c_str());  // we hold the instance lock: any socket file is stale
     mode_t old_mask = umask(077);
     int rc = bind(fd.get(), reinterpret_cast<sockaddr*>(&addr), sizeof(addr));
     umask(old_mask);
-    if (rc != 0 || chmod(path.c_str(), 0600) != 0 || listen(fd.get(), 16) != 0)
+    if (rc != 0 || chmod(path.c_str(), 0600) != 0 || listen(fd.get(), SOMAXCONN) != 0)
         return Fd{};
     return fd;
 }
@@ -232,23 +277,37 @@ int run_daemon()
     signal(SIGPIPE, SIG_IGN);  // replies to vanished clients must not kill us
 
     ModuleHost host(module_dir());
+    Clients clients(max_clients, request_timeout_ms);
+    OverrunWatch overruns;
+    bool is_fresh = true;
     bool is_listening = true;
-    while (!stop_signal) {
-        pollfd p{listener.get(), POLLIN, 0};
-        if (ppoll(&p, 1, nullptr, &wait_mask) < 0)
+    std::vector<pollfd> fds;
+    while (!stop_signal && is_listening) {
+        fds.assign(1, pollfd{listener.get(), static_cast<short>(clients.full() ? 0 : POLLIN), 0});
+        clients.poll_fds(fds);
+        auto before = Clients::Clock::now();
+        int wait_ms = clients.ms_to_deadline(before);
+        if (int w = overruns.ms_to_check(before); w >= 0 && (wait_ms < 0 || w < wait_ms))
+            wait_ms = w;
+        timespec ts{wait_ms / 1000, (wait_ms % 1000) * 1000000L};
+        if (ppoll(fds.data(), fds.size(), wait_ms < 0 ? nullptr : &ts, &wait_mask) < 0)
             continue;  // EINTR: look at stop_signal
-        Fd conn{accept4(listener.get(), nullptr, nullptr, SOCK_CLOEXEC)};
-        if (!conn)
-            continue;
-        Reply reply = serve_connection(host, conn.get());
-        if (reply.should_exit) {
-            release_names(*path, lock_path);  // before the client hears "ok"
-            is_listening = false;
+        auto now = Clients::Clock::now();
+        for (auto& done : clients.collect(fds, 1, now)) {
+            Reply reply = answer(host, done.in, is_fresh);
+            if (reply.should_exit) {
+                release_names(*path, lock_path);  // before the client hears "ok"
+                is_listening = false;
+            }
+            if (!reply.text.empty())
+                (void)rtapi_proto::write_all(done.fd.get(), reply.text, reply_timeout_ms);
+            if (!is_listening)
+                break;
         }
-        if (!reply.text.empty())
-            (void)rtapi_proto::write_all(conn.get(), reply.text, reply_timeout_ms);
-        if (!is_listening)
-            break;
+        if (is_listening && (fds[0].revents & POLLIN))
+            accept_all(listener.get(), clients);
+        if (is_listening)
+            overruns.check(Clients::Clock::now());
     }
     (void)host.unload("all");
     if (is_listening)

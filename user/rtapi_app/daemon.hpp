@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// daemon.hpp - rtapi_app's socket server (protocol.hpp): one connection at a time,
-// so loads are serialized. Runs until "shutdown", SIGTERM/SIGINT, or an unload that
-// leaves no module loaded; then unloads everything and removes its socket.
+// daemon.hpp - rtapi_app's socket server (protocol.hpp): connections are read
+// concurrently, requests answered one at a time (loads are serialized). Runs until
+// "shutdown", SIGTERM/SIGINT, or an unload that leaves no module loaded; then
+// unloads everything and removes its socket.
 #pragma once
 
 namespace hal {

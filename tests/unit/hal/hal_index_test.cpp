@@ -165,14 +165,34 @@ TEST_F(HalIndex, RefusesAnEmptyName)
 
 TEST_F(HalIndex, RefusesANameWithWhitespaceOrControlCharacters)
 {
-    for (const char* bad : {"a b", "a\tb", "a\nb", "a\x7f", "\x01x"}) {
+    struct Case {
+        const char* name;
+        const char* message;
+    };
+    for (const Case& c : {Case{"a b", "signal name contains whitespace (at position 2)"},
+                          Case{"a\tb", "signal name contains whitespace (at position 2)"},
+                          Case{"a\nb", "signal name contains control character 0x0a (at position 2)"},
+                          Case{"a\x7f", "signal name contains control character 0x7f (at position 2)"},
+                          Case{"\x1b[2Jx", "signal name contains control character 0x1b (at position 1)"}}) {
         hal_test::MsgCapture msgs;
         int err;
-        EXPECT_EQ(make(HAL_KIND_SIG, bad, &err), nullptr) << bad;
+        EXPECT_EQ(make(HAL_KIND_SIG, c.name, &err), nullptr) << c.name;
         EXPECT_EQ(err, -EINVAL);
-        EXPECT_THAT(msgs.text(), HasSubstr("whitespace or a control character"));
+        EXPECT_THAT(msgs.text(), HasSubstr(c.message));
+        EXPECT_EQ(msgs.text().find('\x1b'), std::string::npos);  // never echoed raw
     }
     EXPECT_EQ(seg_->count[HAL_KIND_SIG], 0u);
+}
+
+// Issue 19, item 9: a non-ASCII name was said to hold whitespace or a control character.
+TEST_F(HalIndex, RefusesANonAsciiNameSayingSo)
+{
+    hal_test::MsgCapture msgs;
+    int err;
+    EXPECT_EQ(make(HAL_KIND_PIN, "caf\xc3\xa9", &err), nullptr);
+    EXPECT_EQ(err, -EINVAL);
+    EXPECT_THAT(msgs.text(), HasSubstr("pin name contains a non-ASCII byte 0xc3 (at position 4): "
+                                       "HAL names are ASCII"));
 }
 
 TEST_F(HalIndex, ListsObjectsOfAKindInCreationOrder)

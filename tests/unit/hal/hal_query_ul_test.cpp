@@ -398,3 +398,33 @@ TEST_F(HalUl, NoThreadsRunAndThereIsNoBasePeriodWithoutRealtimeCode)
 
 }  // namespace
 }  // namespace hal_test
+
+namespace hal_test {
+namespace {
+
+// Issue 19, item 1: a process killed while it holds the HAL lock (a halcmd in the
+// middle of a .hal file) used to hang every later HAL call, spinning forever.
+TEST_F(HalUl, ALockHeldByADeadProcessIsTakenOverWithAWarning)
+{
+    pid_t child = fork();
+    if (child == 0) {
+        hal_lock();  // the mapping is shared with the parent
+        _exit(0);    // dies holding it
+    }
+    ASSERT_GT(child, 0);
+    int status;
+    ASSERT_EQ(waitpid(child, &status, 0), child);
+    ASSERT_NE(hal_seg->mutex, 0UL);
+    MsgCapture msgs;
+    int old = rtapi_get_msg_level();
+    rtapi_set_msg_level(RTAPI_MSG_WARN);
+    EXPECT_EQ(hal_signal_new("after.dead.holder", HAL_BIT), 0);  // returns, not hangs
+    rtapi_set_msg_level(old);
+    sigs_.push_back("after.dead.holder");
+    EXPECT_THAT(msgs.text(), HasSubstr("rtapi: process " + std::to_string(child) +
+                                       " died holding the HAL lock; taken over"));
+    EXPECT_EQ(hal_seg->mutex, 0UL);
+}
+
+}  // namespace
+}  // namespace hal_test

@@ -30,6 +30,8 @@ void hal_index_remove(struct hal_seg_hdr *seg, struct hal_obj_hdr *obj);
 struct hal_obj_hdr *hal_index_find(struct hal_seg_hdr *seg, enum hal_kind kind, const char *name);
 void *hal_object_new(enum hal_kind kind, rtapi_u32 size, const char *name, rtapi_u32 owner_off, int *err);
 void hal_object_delete(struct hal_obj_hdr *obj);
+void hal_lock(void);
+void hal_unlock(void);
 
 #ifdef __cplusplus
 }

@@ -75,6 +75,25 @@ TEST(ParseValue, FloatNeedsFullMatch)
     }
 }
 
+// Issue 19, items 4 and 9: one rule for floats (finite values only), and a NUL
+// inside the text no longer ends the number early.
+TEST(ParseValue, FloatIsFiniteAndWhole)
+{
+    for (const char* bad : {"nan", "NAN", "-nan", "inf", "-inf", "infinity", "1e999", "-1e400",
+                            "0x1p2000"}) {
+        auto v = parse_value(HAL_FLOAT, bad);
+        ASSERT_FALSE(v) << bad;
+        EXPECT_EQ(v.error().message,
+                  "'" + std::string(bad) + "' is not a valid float value (use a finite number such "
+                  "as 2, -0.5, 1e-3 or 0x1p4; nan, inf and values beyond +-1.7976931348623157e308 "
+                  "are refused)");
+    }
+    EXPECT_FALSE(parse_value(HAL_FLOAT, std::string_view("2\0" "5", 3)));
+    EXPECT_DOUBLE_EQ(parse_value(HAL_FLOAT, "1.7976931348623157e308")->f, 1.7976931348623157e308);
+    EXPECT_EQ(parse_value(HAL_FLOAT, "1e-999")->f, 0.0);  // underflow rounds, as strtod does
+    EXPECT_DOUBLE_EQ(parse_value(HAL_FLOAT, "0x1p4")->f, 16.0);
+}
+
 TEST(FormatValue, BitsAndIntegers)
 {
     hal_value v{};

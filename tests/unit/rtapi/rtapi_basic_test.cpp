@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // rtapi_basic_test - modules, messages, clock period, time, priorities and mutexes of
 // the simulated-realtime RTAPI (user flavor; the same code is in rtapi_rt).
+#include <signal.h>
+#include <sys/mman.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <string>
@@ -10,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "rtapi.h"
+#include "rtapi_mutex_uspace.h"
 
 namespace {
 
@@ -37,12 +41,12 @@ protected:
     int old_level_ = 0;
 };
 
-TEST_F(RtapiMessages, DefaultLevelIsErrors)
+TEST_F(RtapiMessages, DefaultLevelIsWarnings)
 {
     // The test runs without RTAPI_MSG_LEVEL in the environment (ctest passes none).
     if (getenv("RTAPI_MSG_LEVEL"))
         GTEST_SKIP() << "RTAPI_MSG_LEVEL is set";
-    EXPECT_EQ(old_level_, RTAPI_MSG_ERR);
+    EXPECT_EQ(old_level_, RTAPI_MSG_WARN);
 }
 
 TEST_F(RtapiMessages, PrintMsgFiltersByLevel)
@@ -203,6 +207,132 @@ TEST(RtapiMutex, GetSerializesThreads)
     a.join();
     b.join();
     EXPECT_EQ(counter, 40000);
+}
+
+
+
+// --- the holder record (rtapi_mutex_uspace.h): a process that dies holding a lock
+// shared with other processes does not block them forever (issue 19, item 1) ---
+
+// A mutex word in memory shared with a child process.
+class SharedWord {
+public:
+    SharedWord()
+    {
+        void* p = mmap(nullptr, sizeof(unsigned long), PROT_READ | PROT_WRITE,
+                       MAP_SHARED | MAP_ANONYMOUS, -1, 0);
+        word_ = p == MAP_FAILED ? nullptr : static_cast<unsigned long*>(p);
+        if (word_)
+            *word_ = 0;
+    }
+    ~SharedWord()
+    {
+        if (word_)
+            munmap(word_, sizeof(unsigned long));
+    }
+    unsigned long* get() { return word_; }
+
+private:
+    unsigned long* word_;
+};
+
+// Fork a child that takes the lock, tells us on a pipe, then stays until killed
+// ('linger') or exits at once still holding it.
+pid_t child_taking(unsigned long* m, bool linger)
+{
+    int p[2];
+    if (pipe(p) != 0)
+        return -1;
+    pid_t pid = fork();
+    if (pid == 0) {
+        rtapi_mutex_get(m);
+        char c = 'x';
+        (void)!write(p[1], &c, 1);
+        while (linger)
+            pause();
+        _exit(0);
+    }
+    char c;
+    close(p[1]);
+    (void)!read(p[0], &c, 1);
+    close(p[0]);
+    return pid;
+}
+
+TEST(RtapiMutexHolder, HolderWritesItsPidAndGiveClearsTheWord)
+{
+    unsigned long m = 0;
+    rtapi_mutex_get(&m);
+    EXPECT_EQ(rtapi_mutex_word_pid(m), getpid());
+    EXPECT_EQ(rtapi_mutex_holder_state(m), RTAPI_MUTEX_HOLDER_ALIVE);
+    EXPECT_NE(rtapi_mutex_try(&m), 0);  // try() sees it held
+    rtapi_mutex_give(&m);
+    EXPECT_EQ(m, 0UL);
+}
+
+TEST(RtapiMutexHolder, DeadHolderIsTakenOverAfterReaping)
+{
+    SharedWord w;
+    ASSERT_NE(w.get(), nullptr);
+    pid_t child = child_taking(w.get(), false);
+    ASSERT_GT(child, 0);
+    int status;
+    ASSERT_EQ(waitpid(child, &status, 0), child);
+    EXPECT_EQ(rtapi_mutex_word_pid(*w.get()), child);
+    int recovered = -1;
+    EXPECT_EQ(rtapi_mutex_try_recover(w.get(), &recovered), 0UL);
+    EXPECT_EQ(recovered, child);
+    EXPECT_EQ(rtapi_mutex_word_pid(*w.get()), getpid());
+    rtapi_mutex_give(w.get());
+}
+
+TEST(RtapiMutexHolder, ZombieHolderIsDeadAndGetReturns)
+{
+    SharedWord w;
+    ASSERT_NE(w.get(), nullptr);
+    pid_t child = child_taking(w.get(), true);
+    ASSERT_GT(child, 0);
+    kill(child, SIGKILL);
+    // Not reaped yet: a zombie holds nothing. get() must return (it would hang before).
+    rtapi_mutex_get(w.get());
+    EXPECT_EQ(rtapi_mutex_word_pid(*w.get()), getpid());
+    rtapi_mutex_give(w.get());
+    int status;
+    waitpid(child, &status, 0);
+}
+
+TEST(RtapiMutexHolder, LiveHolderIsNotTakenOver)
+{
+    SharedWord w;
+    ASSERT_NE(w.get(), nullptr);
+    pid_t child = child_taking(w.get(), true);
+    ASSERT_GT(child, 0);
+    int recovered = -1;
+    unsigned long held = rtapi_mutex_try_recover(w.get(), &recovered);
+    EXPECT_EQ(rtapi_mutex_word_pid(held), child);
+    EXPECT_EQ(recovered, 0);
+    EXPECT_EQ(rtapi_mutex_holder_state(held), RTAPI_MUTEX_HOLDER_ALIVE);
+    kill(child, SIGKILL);
+    int status;
+    waitpid(child, &status, 0);
+    EXPECT_EQ(rtapi_mutex_try_recover(w.get(), &recovered), 0UL);
+    EXPECT_EQ(recovered, child);
+    rtapi_mutex_give(w.get());
+}
+
+TEST(RtapiMutexHolder, RecycledPidAndMissingRecord)
+{
+    unsigned long me = rtapi_mutex_self_word();
+    EXPECT_EQ(rtapi_mutex_holder_state(me), RTAPI_MUTEX_HOLDER_ALIVE);
+    // Same pid, another start time: the pid now names a different process.
+    EXPECT_EQ(rtapi_mutex_holder_state(me ^ (1UL << 40)), RTAPI_MUTEX_HOLDER_DEAD);
+    // Taken by try() (or realtime code): no record, never taken over.
+    unsigned long m = 0;
+    EXPECT_EQ(rtapi_mutex_try(&m), 0);
+    EXPECT_EQ(rtapi_mutex_holder_state(m), RTAPI_MUTEX_HOLDER_UNKNOWN);
+    int recovered = -1;
+    EXPECT_NE(rtapi_mutex_try_recover(&m, &recovered), 0UL);
+    EXPECT_EQ(recovered, 0);
 }
 
 }  // namespace

@@ -263,13 +263,44 @@ TEST_F(RtapiDaemon, DropsASilentClientAndThenAnswersOthers)
     ASSERT_TRUE(hal::rtapi_load(testmod, {}));
     int silent = connect_raw();  // connects, sends nothing, keeps the connection
     auto start = std::chrono::steady_clock::now();
-    EXPECT_EQ(exchange("ping\n"), "ok\n");  // queued behind the silent one
+    EXPECT_EQ(exchange("ping\n"), "ok\n");  // not delayed by the silent one
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(8));
     char buf[256] = "";
     ssize_t n = read(silent, buf, sizeof(buf) - 1);
     EXPECT_GT(n, 0);
     EXPECT_STREQ(buf, "error -110\nrtapi_app: no complete request within 3000 ms\n");
     close(silent);
+}
+
+// Issue 19, item 6: idle connections used to be served one after another, each
+// for its full read timeout. Now none of them delays a request that is complete.
+TEST_F(RtapiDaemon, IdleClientsDoNotDelayOthers)
+{
+    ASSERT_TRUE(hal::rtapi_load(testmod, {}));
+    std::vector<int> idle;
+    for (int i = 0; i < 25; ++i)
+        idle.push_back(connect_raw());
+    EXPECT_EQ(exchange("ping\n"), "ok\n");
+    EXPECT_EQ(list(), std::vector<std::string>{testmod});
+    // Answered while every idle client is still waiting for its own timeout.
+    for (int fd : idle) {
+        char c;
+        EXPECT_EQ(recv(fd, &c, 1, MSG_DONTWAIT), -1);
+        EXPECT_EQ(errno, EAGAIN);
+    }
+    // A client that sent half a line is not blocked by the others either.
+    int half = connect_raw();
+    ASSERT_EQ(send(half, "pi", 2, MSG_NOSIGNAL), 2);
+    EXPECT_EQ(exchange("list\n"), std::string("ok\n") + testmod + "\n");
+    ASSERT_EQ(send(half, "ng\n", 3, MSG_NOSIGNAL), 3);
+    char buf[16] = "";
+    pollfd p{half, POLLIN, 0};
+    ASSERT_EQ(poll(&p, 1, 10000), 1);
+    EXPECT_EQ(read(half, buf, sizeof(buf) - 1), 3);
+    EXPECT_STREQ(buf, "ok\n");
+    close(half);
+    for (int fd : idle)
+        close(fd);
 }
 
 TEST_F(RtapiDaemon, ShutdownUnloadsEverythingAndRemovesTheSocket)

@@ -1,0 +1,57 @@
+#!/bin/sh
+# SPDX-License-Identifier: GPL-2.0-or-later
+# run-fuzz.sh BUILD SECONDS - run every libFuzzer target in BUILD (tests/fuzz built
+# with clang) for SECONDS each, starting from seeds taken from the test files:
+# .hal files for halcmd, .ini files, .comp sources, streamer inputs, and the small
+# hand-written seeds in tests/fuzz/seeds/. New corpus entries and crash reproducers
+# go to BUILD/corpus/ and BUILD/crashes/. Exit status 1 if any target found a crash.
+set -u
+build=${1:?usage: run-fuzz.sh BUILD SECONDS}
+seconds=${2:?usage: run-fuzz.sh BUILD SECONDS}
+src=$(cd "$(dirname "$0")/../.." && pwd)
+corpus=$build/corpus
+mkdir -p "$build/crashes"
+
+# seed TARGET FILES...: copy test files into the target's corpus (once; the corpus
+# keeps what earlier runs found).
+seed() {
+	t=$1
+	shift
+	mkdir -p "$corpus/$t"
+	for f in "$@"; do
+		[ -f "$f" ] || continue
+		n=$(printf '%s' "$f" | cksum | cut -d' ' -f1)
+		[ -e "$corpus/$t/seed-$n" ] || head -c 65536 "$f" > "$corpus/$t/seed-$n"
+	done
+}
+seed fuzz_halcmd_line $(find "$src/tests" "$src/demo" -name '*.hal' 2>/dev/null | head -300)
+seed fuzz_ini $(find "$src/tests" "$src/demo" -name '*.ini' 2>/dev/null)
+seed fuzz_values "$src/tests/fuzz/seeds/module_args/basic"
+seed fuzz_module_args "$src"/tests/fuzz/seeds/module_args/*
+seed fuzz_protocol "$src"/tests/fuzz/seeds/protocol/*
+seed fuzz_stream_line "$src"/tests/fuzz/seeds/stream_line/*
+seed fuzz_comp "$src"/kernel/components/*.comp
+for v in 0 1 TRUE false -7 0x7fffffff 4294967295 2.5 -1e-3 0x1p4 1e308 nan; do
+	mkdir -p "$corpus/fuzz_values"
+	printf '%s' "$v" > "$corpus/fuzz_values/v-$v"
+done
+
+status=0
+for t in fuzz_halcmd_line fuzz_ini fuzz_values fuzz_module_args fuzz_protocol fuzz_stream_line fuzz_comp; do
+	if [ ! -x "$build/$t" ]; then
+		echo "run-fuzz: $build/$t not built" >&2
+		status=1
+		continue
+	fi
+	log=$build/$t.log
+	if "$build/$t" -max_total_time="$seconds" -max_len=65536 -timeout=10 -rss_limit_mb=2048 \
+		-artifact_prefix="$build/crashes/$t-" -print_final_stats=1 \
+		"$corpus/$t" > "$log" 2>&1; then
+		echo "run-fuzz: $t: $(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$') runs in ${seconds} s, no crash"
+	else
+		echo "run-fuzz: $t FAILED (reproducer in $build/crashes/):" >&2
+		tail -40 "$log" >&2
+		status=1
+	fi
+done
+exit $status

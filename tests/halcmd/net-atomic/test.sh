@@ -1,0 +1,2 @@
+halrun -k -f atomic.hal
+echo "exit $?"
