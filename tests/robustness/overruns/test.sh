@@ -1,6 +1,7 @@
 # RTAPI_MSG_LEVEL: the runner silences warnings for the other tests; this one checks them.
 export RTAPI_MSG_LEVEL=WARN
-# rtapi_app keeps the stderr of the halcmd that started it
+# rtapi_app keeps the stderr of the halcmd that started it when asked to (as halrun does)
+export RTAPI_APP_STDERR=keep
 halcmd loadrt threads name1=fast period1=1000 2> "$TEST_TMPDIR/host.err"
 halcmd start
 sleep 2
