@@ -115,15 +115,11 @@ chmod +x "$ird/init"
 chmod -R go-w "$ird"
 (cd "$ird" && find . | cpio -o -H newc -R 0:0 --quiet | gzip -1) >"$out/initramfs.cpio.gz"
 
-# -parallel: an emulated LPT at 0x378 and -serial null: a second 16550 at 0x2f8 that
-# Linux leaves alone (8250.nr_uarts=1), for hal_parport and serport on real port I/O
-# (tests/hal_parport/qemu-lpt, tests/serport/qemu-uart).
 echo "== booting $kver in qemu (TCG)"
 log=$out/console.log
 timeout "$timeout_s" qemu-system-x86_64 -machine q35 -accel tcg -cpu max -m 768 -smp 2 \
 	-nographic -no-reboot -kernel "/boot/vmlinuz-$kver" -initrd "$out/initramfs.cpio.gz" \
-	-serial mon:stdio -serial null -parallel null \
-	-append "console=ttyS0 edd=off panic=-1 oops=panic rdinit=/init loglevel=4 8250.nr_uarts=1" \
+	-append "console=ttyS0 edd=off panic=-1 oops=panic rdinit=/init loglevel=4" \
 	</dev/null >"$log" 2>&1 || true
 tr -d '\r' <"$log" >"$log.txt"
 
