@@ -107,6 +107,9 @@ run_one() {
 		fi
 	) < /dev/null > "$out/result" 2>&1
 	rc=$?
+	# 'show thread' lists missed periods only when a thread missed some: that depends on
+	# the machine (always in qemu), not on the test, so it stays out of the comparison
+	sed -i '/^ *missed periods (overruns): [0-9]*$/d' "$out/result"
 	# Whatever the test left behind (failed teardown, timeout) must not leak.
 	RTAPI_INSTANCE=$instance timeout 30 halrun -U > /dev/null 2>&1 < /dev/null
 	if [ $rc -eq 124 ]; then

@@ -27,6 +27,9 @@ for t in $(find "$tests" \( -name test.hal -o -name test.sh \) -type f | sort); 
 		fi
 	) </dev/null >"$work/result" 2>&1
 	rc=$?
+	# 'show thread' lists missed periods only when a thread missed some: that depends on
+	# the machine (always in qemu), not on the test, so it stays out of the comparison
+	sed -i '/^ *missed periods (overruns): [0-9]*$/d' "$work/result"
 	# whatever the test left behind (failed teardown, timeout) must not leak
 	timeout 30 halrun -U >/dev/null 2>&1 </dev/null
 	if [ $rc -eq 124 ] || [ $rc -eq 143 ]; then

@@ -5,7 +5,7 @@ check() { if ! eval "$1"; then echo "FAILED: $1"; exit 1; fi; }
 
 insmod $M/rtapi.ko
 insmod $M/hal_lib.ko
-check '! insmod $M/and2.ko count=0 2>/dev/null'
+check '! insmod $M/and2.ko count=100001 2>/dev/null'	# (count=0 means the default count)
 check 'hal_segcheck | grep -q "comps=0 "'
 check '! lsmod | grep -q "^and2 "'
 insmod $M/and2.ko names=first,second

@@ -7,7 +7,7 @@ export HAL_FLAVOR=kernel
 
 out=$(halrun -k -f <<'HAL' 2>&1
 loadrt threads name1=fast period1=10
-loadrt and2 count=0
+loadrt and2 count=100001
 loadrt and2 bogus=1
 loadrt nosuch
 loadrt and2 names=a,b
@@ -20,7 +20,7 @@ HAL
 ) || true	# halrun exits 1 after these errors; this case checks them itself
 echo "$out"
 check 'echo "$out" | grep -qF "<stdin>:1: thread '"'fast'"': period 10 ns is too short (minimum 1000); threads: rtapi_app_main failed: Invalid argument (-22)"'
-check 'echo "$out" | grep -qF "<stdin>:2: and2: count=0 is out of range"'
+check 'echo "$out" | grep -qF "<stdin>:2: and2: count=100001 is out of range"'
 check 'echo "$out" | grep -qF "<stdin>:3: and2: unknown parameter '"'bogus'"'"'
 check 'echo "$out" | grep -qF "<stdin>:4: nosuch: no such realtime module (nosuch.ko is not in the module directory)"'
 check 'echo "$out" | grep -qF "<stdin>:6: and2: already loaded"'
