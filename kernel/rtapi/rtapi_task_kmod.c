@@ -342,28 +342,28 @@ int rtapi_task_resume(int task_id)
 EXPORT_SYMBOL(rtapi_task_resume);
 
 /* May be called by the task itself, inside its FPU section: it then stops here until
- * start or resume (the next rtapi_task_wait is that release's first). */
+ * start or resume (the next rtapi_task_wait is that release's first). The section is
+ * closed before anything that may sleep: the lock below is a sleeping lock on
+ * PREEMPT_RT, and kernel_fpu_begin disables preemption. */
 int rtapi_task_pause(int task_id)
 {
-	struct rtapi_task *t;
+	struct rtapi_task *t, *self = task_of_current();
+	bool fpu = self && self->uses_fp && (int)(self - tasks) == task_id;
 
+	if (fpu)
+		kernel_fpu_end();
 	mutex_lock(&rtapi_kmod_lock);
 	t = task_by_id(task_id);
 	if (t)
 		WRITE_ONCE(t->state, TASK_PAUSED);
 	mutex_unlock(&rtapi_kmod_lock);
-	if (!t) {
+	if (!t)
 		rtapi_print_msg(RTAPI_MSG_ERR, "rtapi: rtapi_task_pause(%d): no such task\n", task_id);
-		return -EINVAL;
-	}
-	if (t->thread == current) {
-		if (t->uses_fp)
-			kernel_fpu_end();
+	else if (t->thread == current)
 		wait_while_paused(t);
-		if (t->uses_fp)
-			kernel_fpu_begin();
-	}
-	return 0;
+	if (fpu)
+		kernel_fpu_begin();
+	return t ? 0 : -EINVAL;
 }
 EXPORT_SYMBOL(rtapi_task_pause);
 
