@@ -12,6 +12,7 @@
 #include "hal_query.h"
 #include "input_text.hpp"
 #include "options.hpp"
+#include "python_path.hpp"
 #include "hal/kmod.hpp"
 #include "realtime.hpp"
 #include "session.hpp"
@@ -81,6 +82,7 @@ int main(int argc, char** argv)
         complain(opts.error().message);
         return 1;
     }
+    export_python_path();                  // for loadusr'd Python components and scripts
     try {
         if (auto r = select_flavor(opts->halcmd.flavor); !r) {
             complain(r.error().message);

@@ -7,6 +7,7 @@
 
 #include "input_text.hpp"
 #include "options.hpp"
+#include "python_path.hpp"
 #include "session.hpp"
 
 int main(int argc, char** argv)
@@ -17,6 +18,7 @@ int main(int argc, char** argv)
         std::fprintf(stderr, "halcmd: %s\n", hal::halcmd::printable(opts.error().message).c_str());
         return 1;
     }
+    hal::halcmd::export_python_path();     // for loadusr'd Python components
     try {
         hal::halcmd::Session session(std::move(*opts));
         return session.run();
