@@ -61,6 +61,10 @@ export HAL_FLAVOR=$flavor
 export RTAPI_MSG_LEVEL=${RTAPI_MSG_LEVEL:-ERR}
 [ "$flavor" = kernel ] && jobs=1
 timeout_s=${HAL_TEST_TIMEOUT:-120}
+# A sanitizer build (make sanitize-test): a case that cannot run there has a file
+# skip-sanitize saying why (tests/python: python3 would need the ASan runtime preloaded).
+sanitize=0
+grep -q '^HAL_SANITIZE:BOOL=ON$' "$build/CMakeCache.txt" 2>/dev/null && sanitize=1
 
 mapfile -t all_dirs < <(find "$tests_dir" -path "$tests_dir/unit" -prune -o \
 	\( -name test.hal -o -name test.sh \) -type f -printf '%h\n' | sort -u)
@@ -89,7 +93,7 @@ instance_base=$(( ($$ % 2000) * 1000 + 1000000 ))
 run_one() {
 	local idx=$1 dir=$2 out="$work/$1" rel=${2#"$tests_dir"/} rc ok
 	mkdir -p "$out/tmp"
-	if [ -e "$dir/skip-flavor-$flavor" ]; then
+	if [ -e "$dir/skip-flavor-$flavor" ] || { [ $sanitize -eq 1 ] && [ -e "$dir/skip-sanitize" ]; }; then
 		echo SKIP > "$out/status"
 		echo "SKIP $rel"
 		return
