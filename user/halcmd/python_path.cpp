@@ -17,6 +17,8 @@ namespace fs = std::filesystem;
 
 void export_python_path()
 {
+    if (std::string(HAL_PYTHON_DIR).empty())
+        return;                               // a build without the module
     std::error_code ec;
     fs::path exe = fs::read_symlink("/proc/self/exe", ec);
     if (ec)

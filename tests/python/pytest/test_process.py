@@ -63,3 +63,18 @@ def test_halcmd_puts_the_module_on_pythonpath(name):
     assert r.returncode == 1
     assert "hal.error: 'nope' is not a pin, parameter or signal" in r.stderr
     assert "exited with status 1" in r.stderr
+
+
+def test_halcmd_puts_its_module_first_once():
+    module_dir = os.path.dirname(hal.__file__)
+    code = "import os; print(os.environ['PYTHONPATH'])"
+    halcmd_bin = os.path.join(os.environ["HAL_BIN_DIR"], "halcmd")
+    for given, want in (("/elsewhere", f"{module_dir}:/elsewhere"),
+                        (f"{module_dir}:/elsewhere", f"{module_dir}:/elsewhere"),
+                        (module_dir, module_dir)):
+        env = dict(CHILD_ENV, PYTHONPATH=given)
+        r = subprocess.run([halcmd_bin, "loadusr", "-w", sys.executable, "-c", code],
+                           capture_output=True, text=True, timeout=60, env=env,
+                           stdin=subprocess.DEVNULL)
+        assert r.returncode == 0, r.stderr
+        assert r.stdout == want + "\n"
