@@ -5,9 +5,14 @@ BUILD ?= build
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?=
 
-# KERNEL_TEST=0 make test (= make test-sim): the simulated flavor only, no kernel
-# images, qemu, packages or root needed.
+# make test runs: units, the HAL-level suite (simulated flavor), the sanitizer job,
+# the fuzz smoke run, the kernel flavor in qemu. Each of the last three can be left
+# out: KERNEL_TEST=0 (no kernel images, qemu or root needed), SANITIZE_TEST=0 (no
+# ASan/UBSan build and run), FUZZ_TEST=0 (no libFuzzer build and run).
+# make test-sim is the plain simulated flavor: units and the HAL-level suite only.
 KERNEL_TEST ?= 1
+SANITIZE_TEST ?= 1
+FUZZ_TEST ?= 1
 
 .PHONY: all deps configure build test test-sim unit-test hal-test kmod kernel-test demo bench install clean \
 	deb package-test fresh-clone-test
@@ -51,7 +56,8 @@ kernel-test: build
 
 # package-test and fresh-clone-test are separate targets (not yet part of make test:
 # they have not been proven within CI's time budget).
-test: unit-test hal-test $(if $(filter 0,$(KERNEL_TEST)),,kernel-test)
+test: unit-test hal-test $(if $(filter 0,$(SANITIZE_TEST)),,sanitize-test) \
+	$(if $(filter 0,$(FUZZ_TEST)),,fuzz-smoke) $(if $(filter 0,$(KERNEL_TEST)),,kernel-test)
 
 test-sim: unit-test hal-test
 
@@ -83,15 +89,19 @@ clean:
 	rm -rf $(BUILD)
 
 # --- Robustness (issue 19): a sanitizer build and libFuzzer targets --------------
+# Both are part of make test (SANITIZE_TEST=0 / FUZZ_TEST=0 leave them out).
 # sanitize-test: ASan + UBSan build of everything (own tree, same ccache) running the
 # unit tests and the simulated-flavor HAL-level suite, no suppressions. UBSan findings
-# abort (-fno-sanitize-recover), so they fail the tests that hit them.
-# fuzz-smoke: every fuzz target for FUZZ_SECONDS;
+# abort (-fno-sanitize-recover), so they fail the tests that hit them; ASan's leak
+# check is on. The fault-injection test runs SAN_FAULT_ROUNDS of its kills here
+# (all 100 run in hal-test), which keeps the job within CI's budget.
+# fuzz-smoke: every fuzz target for FUZZ_SECONDS (in make test);
 # fuzz: the same for FUZZ_LONG_SECONDS each, keeping the corpus in build-fuzz/corpus.
 SAN_BUILD ?= build-asan
 FUZZ_BUILD ?= build-fuzz
 FUZZ_SECONDS ?= 15
 FUZZ_LONG_SECONDS ?= 600
+SAN_FAULT_ROUNDS ?= 20
 SAN_ENV = ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=0 \
 	UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 
@@ -102,7 +112,8 @@ sanitize-test:
 	cmake -S . -B $(SAN_BUILD) -DHAL_SANITIZE=ON $(CMAKE_FLAGS)
 	cmake --build $(SAN_BUILD) -j$(JOBS)
 	cd $(SAN_BUILD) && $(SAN_ENV) ctest --output-on-failure -j$(JOBS)
-	$(SAN_ENV) HAL_TEST_TIMEOUT=300 tests/run-hal-tests.sh --build $(SAN_BUILD) --flavor sim -j$(JOBS)
+	$(SAN_ENV) HAL_TEST_TIMEOUT=300 FAULT_ROUNDS=$(SAN_FAULT_ROUNDS) \
+		tests/run-hal-tests.sh --build $(SAN_BUILD) --flavor sim -j$(JOBS)
 
 fuzz-build:
 	@scripts/fuzz-deps
@@ -115,4 +126,3 @@ fuzz-smoke: fuzz-build
 fuzz: fuzz-build
 	tests/fuzz/run-fuzz.sh $(FUZZ_BUILD) $(FUZZ_LONG_SECONDS)
 
-# Not yet part of `make test`: neither has been run within CI's time budget.

@@ -451,10 +451,11 @@ int main(int argc, char **argv)
 			n -= 2;
 		}
 		if (v && !value_fits(type, v + 1, n)) {
-			free(ko);
-			close(fd);
+			/* type points into ko: print before freeing it */
 			fprintf(stderr, "emc_module_helper: %s: %.*s: '%.*s' is not a value of type %s\n",
 				name, plen, argv[i], (int)n, v + 1, type);
+			free(ko);
+			close(fd);
 			return 2;
 		}
 		n = strlen(one);

@@ -52,20 +52,6 @@ void hal_alias_remove_all(struct hal_obj_hdr *target)
 	}
 }
 
-/* The alias record named 'name' of this kind, or NULL (a real object's name is no alias). */
-static struct hal_alias_rec *alias_named(enum hal_kind kind, const char *name)
-{
-	rtapi_u32 off;
-
-	for (off = hal_seg->alias_head; off; off = alias_at(off)->hdr.next_off) {
-		struct hal_alias_rec *a = alias_at(off);
-
-		if (a->hdr.kind == kind && strcmp(a->hdr.name, name) == 0)
-			return a;
-	}
-	return 0;
-}
-
 static int alias_add_locked(enum hal_kind kind, struct hal_obj_hdr *target, const char *alias)
 {
 	struct hal_alias_rec *a;
@@ -155,6 +141,22 @@ int hal_param_alias(const char *param_name, const char *alias)
 }
 
 #ifdef ULAPI
+
+/* The alias record named 'name' of this kind, or NULL (a real object's name is no alias).
+ * Only unalias, a ULAPI call, looks aliases up by their own name. */
+static struct hal_alias_rec *alias_named(enum hal_kind kind, const char *name)
+{
+	rtapi_u32 off;
+
+	for (off = hal_seg->alias_head; off; off = alias_at(off)->hdr.next_off) {
+		struct hal_alias_rec *a = alias_at(off);
+
+		if (a->hdr.kind == kind && strcmp(a->hdr.name, name) == 0)
+			return a;
+	}
+	return 0;
+}
+
 /* --- tools (hal_query.h) --- */
 
 static int unalias(enum hal_kind kind, const char *name)

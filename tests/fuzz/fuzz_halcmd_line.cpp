@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // fuzz_halcmd_line - halcmd's reading of a .hal file: the byte check, continuation
-// joining, the tokenizer with environment and inifile substitution, and the
-// command-line option parser on the resulting words. Input: any bytes (a .hal file).
+// joining, the tokenizer with environment and inifile substitution, the command
+// parser (dispatch table, setp shorthand, arrows, argument counts; no handler runs)
+// and the command-line option parser on the resulting words. Input: any bytes (a
+// .hal file).
 #include <cstdint>
 #include <cstdlib>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "commands.hpp"
 #include "input_text.hpp"
 #include "line_parser.hpp"
 #include "options.hpp"
@@ -43,6 +46,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
             continue;
         for (const std::string& w : *words)
             (void)is_arrow(w);
+        auto parsed = parse_command(*words);
+        if (parsed && parsed->command) {
+            int n = static_cast<int>(parsed->args.size());
+            if (n < parsed->command->min_args || (parsed->command->max_args >= 0 && n > parsed->command->max_args))
+                std::abort();  // the handler would get a count it does not expect
+        }
         std::vector<std::string> argv{"halcmd"};
         argv.insert(argv.end(), words->begin(), words->end());
         (void)parse_halcmd_options(argv);

@@ -25,10 +25,21 @@ seed() {
 	done
 }
 seed fuzz_halcmd_line $(find "$src/tests" "$src/demo" -name '*.hal' 2>/dev/null | head -300)
-seed fuzz_ini $(find "$src/tests" "$src/demo" -name '*.ini' 2>/dev/null)
+seed fuzz_ini $(find "$src/tests" "$src/demo" -name '*.ini' 2>/dev/null) "$src"/tests/fuzz/seeds/ini/*
 seed fuzz_values "$src/tests/fuzz/seeds/module_args/basic"
 seed fuzz_module_args "$src"/tests/fuzz/seeds/module_args/*
 seed fuzz_protocol "$src"/tests/fuzz/seeds/protocol/*
+# The loadrt lines of the test files: their arguments for the module argument parser,
+# as "load MOD ARGS" requests for the daemon's protocol (one seed per distinct line).
+find "$src/tests" "$src/demo" -name '*.hal' -exec grep -h '^[[:space:]]*loadrt[[:space:]]' {} + 2>/dev/null |
+	sed 's/^[[:space:]]*loadrt[[:space:]]*//; s/[[:space:]]*#.*//' | sort -u | head -200 |
+	while IFS= read -r line; do
+		n=$(printf '%s' "$line" | cksum | cut -d' ' -f1)
+		[ -e "$corpus/fuzz_protocol/load-$n" ] || printf '\001load %s\n' "$line" > "$corpus/fuzz_protocol/load-$n"
+		args=${line#* }
+		[ "$args" = "$line" ] && continue
+		[ -e "$corpus/fuzz_module_args/args-$n" ] || printf '%s' "$args" > "$corpus/fuzz_module_args/args-$n"
+	done
 seed fuzz_stream_line "$src"/tests/fuzz/seeds/stream_line/*
 seed fuzz_comp "$src"/kernel/components/*.comp
 for v in 0 1 TRUE false -7 0x7fffffff 4294967295 2.5 -1e-3 0x1p4 1e308 nan; do

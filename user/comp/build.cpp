@@ -215,6 +215,8 @@ Result<fs::path> compile_sim(const Source& s, const std::string& file, const Pat
                                     "-shared", "-DRTAPI"};
     for (const auto& f : words(COMP_RT_C_FLAGS))
         cmd.push_back(f);
+    for (const auto& f : words(COMP_SANITIZE_FLAGS))   // empty but in a sanitizer build
+        cmd.push_back(f);
     add_includes(cmd, file, p);
     for (const auto& w : words(s.compile_args))
         cmd.push_back(w);
@@ -291,6 +293,9 @@ Result<fs::path> compile_userspace(const Source& s, const std::string& file, con
                                    const fs::path& out)
 {
     std::vector<std::string> cmd = {env_or("CC", "cc"), "-std=gnu11", "-O2", "-g", "-DULAPI"};
+    // A sanitizer build's hal_ul/rtapi_ul are instrumented: link the runtime they need.
+    for (const auto& f : words(COMP_SANITIZE_FLAGS))
+        cmd.push_back(f);
     add_includes(cmd, file, p);
     for (const auto& w : words(s.compile_args))
         cmd.push_back(w);

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "line_parser.hpp"
+
 namespace hal::halcmd {
 
 namespace {
@@ -108,6 +110,26 @@ std::vector<std::string> command_names()
     for (const Command& c : table)
         names.emplace_back(c.name);
     return names;
+}
+
+Result<ParsedCommand> parse_command(std::vector<std::string> words)
+{
+    ParsedCommand p;
+    if (words.empty())
+        return p;
+    if (words.size() == 3 && words[1] == "=")        // "name = value" is setp
+        words = {"setp", words[0], words[2]};
+    p.command = find_command(words[0]);
+    if (!p.command)
+        return Error{-22, "unknown command '" + words[0] + "' (try 'help')"};
+    for (size_t i = 1; i < words.size(); i++)
+        if (!p.command->strips_arrows || !is_arrow(words[i]))
+            p.args.push_back(std::move(words[i]));
+    int n = static_cast<int>(p.args.size());
+    if (n < p.command->min_args || (p.command->max_args >= 0 && n > p.command->max_args))
+        return Error{-22, std::string(p.command->name) + ": wrong number of arguments (usage: " +
+                              p.command->usage + ")"};
+    return p;
 }
 
 void print_help(std::FILE* out, std::string_view topic)

@@ -31,6 +31,15 @@ std::span<const Command> command_table();
 const Command* find_command(std::string_view name);
 std::vector<std::string> command_names();
 
+// A line's words resolved against the table, before anything runs: "NAME = VALUE" is
+// setp, net/link* drop their arrows, the argument count is checked against the
+// command's. No words: command is null. Pure (the fuzz target tests/fuzz/ calls it).
+struct ParsedCommand {
+    const Command* command = nullptr;
+    std::vector<std::string> args;
+};
+Result<ParsedCommand> parse_command(std::vector<std::string> words);
+
 // Fails with a message naming the lock level when any of lock_bits is set.
 Result<void> require_unlocked(int lock_bits, std::string_view command);
 

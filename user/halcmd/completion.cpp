@@ -177,7 +177,11 @@ void complete_args(Collector& c, Completion& out, const CompletionSources& src, 
             add_linkable_pins(c, h, std::nullopt, false);
         } else if (pos == 1) {
             const hal_pin_info* p = find_pin(h, l.args[0]);
-            std::optional<hal_type_t> type = p ? std::optional<hal_type_t>(p->type) : std::nullopt;
+            // Set in a statement of its own: from a conditional expression, GCC 12 thinks
+            // the optional's value may be read uninitialized (-Wmaybe-uninitialized).
+            std::optional<hal_type_t> type;
+            if (p)
+                type = p->type;
             if (cmd == "linkps")
                 add_sigs(c, h, type);
             else

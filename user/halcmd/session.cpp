@@ -107,20 +107,13 @@ void Session::report(const Error& e)
 
 Result<void> Session::execute(std::vector<std::string> words)
 {
-    if (words.empty())
+    auto parsed = parse_command(std::move(words));
+    if (!parsed)
+        return parsed.error();
+    if (!parsed->command)
         return ok();
-    if (words.size() == 3 && words[1] == "=")        // "name = value" is setp
-        words = {"setp", words[0], words[2]};
-    const Command* c = find_command(words[0]);
-    if (!c)
-        return Error{-22, "unknown command '" + words[0] + "' (try 'help')"};
-    std::vector<std::string> args;
-    for (size_t i = 1; i < words.size(); i++)
-        if (!c->strips_arrows || !is_arrow(words[i]))
-            args.push_back(words[i]);
-    int n = static_cast<int>(args.size());
-    if (n < c->min_args || (c->max_args >= 0 && n > c->max_args))
-        return Error{-22, std::string(c->name) + ": wrong number of arguments (usage: " + c->usage + ")"};
+    const Command* c = parsed->command;
+    const std::vector<std::string>& args = parsed->args;
     captured_.clear();
     Result<void> r = c->run(*this, args);
     if (r) {

@@ -45,8 +45,9 @@ TEST(PlotOptions, Refused)
                                                            {"-s", "800"}, {"-s", "50x50"}, {"-T"}, {"extra"}}) {
         auto o = parse(args);
         EXPECT_FALSE(o) << args[0];
-        if (!o)
+        if (!o) {
             EXPECT_EQ(o.error().message.find('\n'), std::string::npos);
+        }
     }
 }
 
