@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <regex>
 #include <cstring>
 #include <sstream>
 
@@ -419,12 +420,26 @@ private:
         o_ << "\n";
     }
 
+    // As halcompile does: with one function and no FUNCTION() in the code, the code after
+    // ";;" is that function's body.
+    bool code_is_body() const
+    {
+        static const std::regex defines_function(R"(\bFUNCTION\s*\()");
+        return !c_.is_userspace() && c_.functions.size() == 1 &&
+               !std::regex_search(c_.code, defines_function);
+    }
+
     void user_code()
     {
+        bool wrap = code_is_body();
+        if (wrap)
+            o_ << "FUNCTION(" << c_.functions[0].name << ") {\n";
         o_ << "#line " << (c_.code_line ? c_.code_line : 1) << " " << c_quote(c_.file) << "\n";
         o_ << c_.code;
         if (!c_.code.empty() && c_.code.back() != '\n')
             o_ << "\n";
+        if (wrap)
+            o_ << "}\n";
     }
 
     void undef_macros()
