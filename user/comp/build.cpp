@@ -362,6 +362,32 @@ Result<void> do_build(const Options& o, const std::string& file, const Paths& p)
 
 }  // namespace
 
+// Where the halrun on PATH (else this comp) loads modules from: a run-in-place tree's
+// rtlib/ beside bin/, or an installed prefix's lib/hal/rtlib; else the compiled-in one.
+std::string halrun_module_dir()
+{
+    std::vector<fs::path> exes;
+    if (const char* path = std::getenv("PATH"))
+        for (const std::string& d : split_colon(path))
+            if (!d.empty() && fs::exists(fs::path(d) / "halrun")) {
+                exes.push_back(fs::path(d) / "halrun");
+                break;
+            }
+    std::error_code ec;
+    if (fs::path self = fs::read_symlink("/proc/self/exe", ec); !ec)
+        exes.push_back(self);
+    for (const fs::path& exe : exes) {
+        fs::path bin = fs::canonical(exe, ec).parent_path();
+        if (ec)
+            continue;
+        if (fs::is_directory(bin.parent_path() / "rtlib", ec))
+            return (bin.parent_path() / "rtlib").string();
+        if (fs::is_directory(bin.parent_path() / "lib/hal/rtlib", ec))
+            return (bin.parent_path() / "lib/hal/rtlib").string();
+    }
+    return COMP_INSTALL_RTLIB_DIR;
+}
+
 Paths find_paths()
 {
     Paths p;
@@ -381,7 +407,7 @@ Paths find_paths()
     if (p.ul_libs.empty())
         p.ul_libs = split_colon(fs::exists(COMP_INSTALL_UL_LIBS_PROBE) ? COMP_INSTALL_UL_LIBS
                                                                        : COMP_BUILD_UL_LIBS);
-    p.rtlib_dir = env_or("HAL_RTLIB_DIR", COMP_INSTALL_RTLIB_DIR);
+    p.rtlib_dir = env_or("HAL_RTLIB_DIR", halrun_module_dir());
     p.bin_dir = env_or("HAL_BIN_DIR", COMP_INSTALL_BIN_DIR);
     p.man9_dir = env_or("HAL_MAN_DIR", COMP_INSTALL_MAN9_DIR);
     std::string flavor = env_or("HAL_FLAVOR", "");
