@@ -7,7 +7,9 @@
  *   rawcounts (s32 ro).
  * Functions counter.update-counters (no FP) and counter.capture-position (FP).
  * Counting is encoder_core.h in counter mode; the velocity reads 0 below one
- * count per second (counter has no min-speed-estimate). */
+ * count per second (counter has no min-speed-estimate). As LinuxCNC's counter does,
+ * the inputs start out low (phase-A high in the first period is a count) and an
+ * index pulse is taken when index-enable was TRUE at the last capture-position. */
 #include "rtapi.h"
 #include "rtapi_app.h"
 #include "hal.h"
@@ -33,7 +35,7 @@ static void counter_update_counters(void *arg, long period_ns)
 
 		in.a = *c->phase_a;
 		in.z = *c->phase_z;
-		in.index_enable = *c->index_enable;
+		in.index_enable = c->index_armed;
 		c->rawcounts = enc_update(&c->up, &c->shared, &c->acks, &in, period_ns);
 	}
 }
@@ -64,6 +66,10 @@ static int counter_export(struct counter_chan *c, int n)
 	if (err)
 		return err;
 	*(volatile rtapi_u64 *)&c->scale = FLOAT_ONE_BITS;
+	c->up.primed = true;	/* with low previous levels: the first period can count */
+	c->up.a = c->up.z = false;
+	c->up.pos = enc_quad_pos(false, false);
+	c->index_armed = false;
 	return 0;
 }
 

@@ -28,5 +28,6 @@ COMP_FP_LOCAL void counter_capture_position(void *arg, long period_ns)
 		*c->counts = o.counts;
 		*c->position = o.position;
 		*c->velocity = o.velocity;
+		c->index_armed = *c->index_enable;
 	}
 }

@@ -24,6 +24,7 @@ struct counter_chan {		/* in hal_malloc() memory */
 	struct enc_shared shared;	/* update-counters -> capture-position */
 	struct enc_acks acks;	/* capture-position -> update-counters */
 	struct enc_capture_state cap;	/* private to capture-position */
+	bool index_armed;	/* index-enable as capture-position last saw it; read by update-counters */
 };
 
 struct counter_set {		/* in hal_malloc() memory: the functions' argument */

@@ -14,6 +14,8 @@ union fifo_pin_ptr {		/* one PREFIX.N.pin.M; which member follows cfg[M] */
 	hal_bit_t *b;
 	hal_s32_t *s;
 	hal_u32_t *u;
+	hal_s64_t *l;
+	hal_u64_t *k;
 };
 
 struct fifo_shm {		/* one FIFO's two RTAPI segments, as mapped here */
@@ -38,7 +40,7 @@ static inline int fifo_module_count(const char *comp, char *const *cfg, const in
 		}
 		if (pins < 0) {
 			rtapi_print_msg(RTAPI_MSG_ERR,
-					"%s: cfg= string %d '%s': bad character '%c', use f, b, s or u\n",
+					"%s: cfg= string %d '%s': bad character '%c', use f, b, s, u, l (s64) or k (u64)\n",
 					comp, n + 1, cfg[n], cfg[n][-pins - 1]);
 			return -EINVAL;
 		}
@@ -144,6 +146,12 @@ static inline int fifo_pins_export(union fifo_pin_ptr *pins, int comp_id, const 
 			break;
 		case HAL_FIFO_U32:
 			err = hal_pin_u32_newf(dir, &pins[m].u, comp_id, "%s.%d.pin.%d", comp, n, m);
+			break;
+		case HAL_FIFO_S64:
+			err = hal_pin_s64_newf(dir, &pins[m].l, comp_id, "%s.%d.pin.%d", comp, n, m);
+			break;
+		case HAL_FIFO_U64:
+			err = hal_pin_u64_newf(dir, &pins[m].k, comp_id, "%s.%d.pin.%d", comp, n, m);
 			break;
 		default:
 			err = -EINVAL;	/* fifo_module_count() accepted only good characters */

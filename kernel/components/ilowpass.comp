@@ -25,16 +25,14 @@ FUNCTION(_)
 {
 	double r;
 
-	value += (in * scale - value) * gain;
-	/* round to nearest (halves away from zero, symmetric for +- counts)
-	 * and saturate instead of overflowing the s32 */
-	r = round(value);
-	if (r > 2147483647.0)
-		out = 2147483647;
-	else if (r < -2147483648.0)
-		out = -2147483647 - 1;
-	else if (isnan(r))
-		out = 0;
+	/* LinuxCNC's arithmetic, which users' jog scales were tuned against: the filter
+	 * runs on the unscaled input, the output is floor(value * scale + 0.5) converted
+	 * through 64 bits and kept modulo 2^32, so a count past the s32 range wraps
+	 * around as the MPG's own counts do (past +-2^63 it reads 0, as x86 gives). */
+	value += (in - value) * gain;
+	r = floor(value * scale + 0.5);
+	if (r > -9223372036854775808.0 && r < 9223372036854775808.0)
+		out = (rtapi_s32)(rtapi_u32)(rtapi_u64)(rtapi_s64)r;
 	else
-		out = (rtapi_s32)r;
+		out = 0;
 }

@@ -2,8 +2,9 @@
 /* sampler.c - sample HAL pins into a shared-memory FIFO in real time, sampler(9):
  * loadrt sampler depth=depth1[,depth2...] cfg=string1[,string2...].
  * Per FIFO N: input pins sampler.N.pin.M (typed by cfg), sampler.N.enable (bit in,
- * default TRUE), sampler.N.curr-depth (s32 out), sampler.N.full (bit out);
- * params sampler.N.overruns and sampler.N.sample-num (s32 rw); function sampler.N.
+ * default TRUE), sampler.N.curr-depth (s32 out), sampler.N.full (bit out),
+ * sampler.N.overruns and sampler.N.sample-num (s32 I/O pins, as in LinuxCNC 2.9 and
+ * later: the sampler counts them up, setp resets them); function sampler.N.
  * halsampler(1) reads the FIFO (layout in streamer_fifo.h). */
 #include "rtapi.h"
 #include "rtapi_app.h"
@@ -44,9 +45,9 @@ static int sampler_export(struct fifo_module *fm, void *mem, int n)
 	if (!err)
 		err = hal_pin_bit_newf(HAL_OUT, &s->full, fm->comp_id, "sampler.%d.full", n);
 	if (!err)
-		err = hal_param_s32_newf(HAL_RW, &s->overruns, fm->comp_id, "sampler.%d.overruns", n);
+		err = hal_pin_s32_newf(HAL_IO, &s->overruns, fm->comp_id, "sampler.%d.overruns", n);
 	if (!err)
-		err = hal_param_s32_newf(HAL_RW, &s->sample_num, fm->comp_id, "sampler.%d.sample-num", n);
+		err = hal_pin_s32_newf(HAL_IO, &s->sample_num, fm->comp_id, "sampler.%d.sample-num", n);
 	if (err)
 		return err;
 	*s->enable = true;

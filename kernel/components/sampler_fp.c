@@ -21,10 +21,10 @@ COMP_FP_LOCAL void sample(void *arg, long period_ns)
 	if (*s->enable) {
 		rec = hal_fifo_write_slot(s->hdr, s->data);
 		if (!rec) {
-			s->overruns = next_s32(s->overruns);
+			*s->overruns = next_s32(*s->overruns);
 			s->gap = true;
 		} else {
-			rec[HAL_FIFO_REC_SAMPLE].s = s->sample_num;
+			rec[HAL_FIFO_REC_SAMPLE].s = *s->sample_num;
 			rec[HAL_FIFO_REC_FLAGS].u = s->gap ? HAL_FIFO_GAP : 0;
 			rec += HAL_FIFO_REC_HDR_WORDS;
 			for (m = 0; m < s->num_pins; m++) {
@@ -38,15 +38,18 @@ COMP_FP_LOCAL void sample(void *arg, long period_ns)
 				case HAL_FIFO_S32:
 					rec[m].s = *s->pins[m].s;
 					break;
-				default:
+				case HAL_FIFO_U32:
 					rec[m].u = *s->pins[m].u;
+					break;
+				default:	/* s64, u64: one untorn load */
+					rec[m].u = rtapi_load_u64((volatile rtapi_u64 *)s->pins[m].k);
 					break;
 				}
 			}
 			hal_fifo_write_done(s->hdr);
 			s->gap = false;
 		}
-		s->sample_num = next_s32(s->sample_num);
+		*s->sample_num = next_s32(*s->sample_num);
 	}
 	used = hal_fifo_used(s->hdr);
 	*s->curr_depth = (hal_s32_t)used;

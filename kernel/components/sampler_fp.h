@@ -17,8 +17,8 @@ struct sampler {		/* in hal_malloc() memory, one per FIFO */
 	hal_bit_t *enable;		/* read by sample() */
 	hal_s32_t *curr_depth;		/* written by sample() */
 	hal_bit_t *full;		/* written by sample() */
-	hal_s32_t overruns;		/* param: sample() counts up, setp resets */
-	hal_s32_t sample_num;		/* param: sample() counts up, setp resets */
+	hal_s32_t *overruns;		/* I/O pin: sample() counts up, setp resets */
+	hal_s32_t *sample_num;		/* I/O pin: sample() counts up, setp resets */
 	bool gap;			/* private to sample(): a sample was dropped */
 	int num_pins;
 	char type[HAL_FIFO_MAX_PINS];	/* enum hal_fifo_type per pin */

@@ -3,7 +3,9 @@
  * streamer(9): loadrt streamer depth=depth1[,depth2...] cfg=string1[,string2...].
  * Per FIFO N: output pins streamer.N.pin.M (typed by cfg), streamer.N.curr-depth
  * (s32 out), streamer.N.empty (bit out), streamer.N.enable (bit in, default TRUE),
- * streamer.N.underruns (s32 read/write pin, listed under PINS on the page);
+ * streamer.N.underruns (s32 read/write pin, listed under PINS on the page),
+ * streamer.N.clock (bit in) and streamer.N.clock-mode (s32 in: 0 every period, the
+ * default; 1 falling edges of clock, 2 rising, 3 both; other values as 0);
  * function streamer.N. halstreamer(1) fills the FIFO (layout in streamer_fifo.h). */
 #include "rtapi.h"
 #include "rtapi_app.h"
@@ -45,6 +47,10 @@ static int streamer_export(struct fifo_module *fm, void *mem, int n)
 		err = hal_pin_bit_newf(HAL_IN, &s->enable, fm->comp_id, "streamer.%d.enable", n);
 	if (!err)
 		err = hal_pin_s32_newf(HAL_IO, &s->underruns, fm->comp_id, "streamer.%d.underruns", n);
+	if (!err)
+		err = hal_pin_bit_newf(HAL_IN, &s->clock, fm->comp_id, "streamer.%d.clock", n);
+	if (!err)
+		err = hal_pin_s32_newf(HAL_IN, &s->clock_mode, fm->comp_id, "streamer.%d.clock-mode", n);
 	if (err)
 		return err;
 	*s->enable = true;

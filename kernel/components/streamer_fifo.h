@@ -43,10 +43,12 @@ enum hal_fifo_type {
 	HAL_FIFO_FLOAT = 0,
 	HAL_FIFO_BIT,
 	HAL_FIFO_S32,
-	HAL_FIFO_U32
+	HAL_FIFO_U32,
+	HAL_FIFO_S64,
+	HAL_FIFO_U64
 };
 
-/* One value as stored: floats as doubles, bits as 0/1, s32 sign-extended. */
+/* One value as stored: floats as doubles, bits as 0/1, s32 sign-extended, s64/u64 as they are. */
 union hal_fifo_value {
 	rtapi_u64 u;
 	rtapi_s64 s;
@@ -70,7 +72,8 @@ struct hal_fifo_hdr {
 };
 HAL_FIFO_STATIC_ASSERT(sizeof(struct hal_fifo_hdr) == 64, "FIFO header layout changed");
 
-/* Type of one cfg character (sampler(9): F f B b S s U u). */
+/* Type of one cfg character (sampler(9): F f B b S s U u; L l for s64 and K k for
+ * u64, as LinuxCNC's sampler and streamer take them). */
 static inline enum hal_fifo_type hal_fifo_type_of(char c)
 {
 	switch (c) {
@@ -78,6 +81,8 @@ static inline enum hal_fifo_type hal_fifo_type_of(char c)
 	case 'b': case 'B': return HAL_FIFO_BIT;
 	case 's': case 'S': return HAL_FIFO_S32;
 	case 'u': case 'U': return HAL_FIFO_U32;
+	case 'l': case 'L': return HAL_FIFO_S64;
+	case 'k': case 'K': return HAL_FIFO_U64;
 	default: return HAL_FIFO_BAD;
 	}
 }

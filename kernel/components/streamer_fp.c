@@ -4,8 +4,22 @@
  * on a thread that opened an FPU section (exported with uses_fp = 1). */
 #include "streamer_fp.h"
 
-/* One record per call; with none available the pins keep their values and an
- * underrun is counted. */
+/* Does clock-mode ask for a record in this period? */
+static bool clocked(struct streamer *s)
+{
+	bool clk = *s->clock, last = s->last_clock;
+
+	s->last_clock = clk;
+	switch (*s->clock_mode) {
+	case STREAMER_CLOCK_FALLING: return last && !clk;
+	case STREAMER_CLOCK_RISING: return !last && clk;
+	case STREAMER_CLOCK_BOTH: return last != clk;
+	default: return true;
+	}
+}
+
+/* One record per call (per clock edge with clock-mode 1..3); with none available the
+ * pins keep their values and an underrun is counted. */
 COMP_FP_LOCAL void update(void *arg, long period_ns)
 {
 	struct streamer *s = arg;
@@ -13,7 +27,7 @@ COMP_FP_LOCAL void update(void *arg, long period_ns)
 	rtapi_u32 used;
 	int m;
 
-	if (*s->enable) {
+	if (clocked(s) && *s->enable) {
 		rec = hal_fifo_read_slot(s->hdr, s->data);
 		if (!rec) {
 			*s->underruns = (hal_s32_t)((rtapi_u32)*s->underruns + 1u);
@@ -30,8 +44,11 @@ COMP_FP_LOCAL void update(void *arg, long period_ns)
 				case HAL_FIFO_S32:
 					*s->pins[m].s = (hal_s32_t)rec[m].s;
 					break;
-				default:
+				case HAL_FIFO_U32:
 					*s->pins[m].u = (rtapi_u32)rec[m].u;
+					break;
+				default:	/* s64, u64: one untorn store */
+					rtapi_store_u64((volatile rtapi_u64 *)s->pins[m].k, rec[m].u);
 					break;
 				}
 			}

@@ -11,6 +11,11 @@
 #include "fp_split.h"
 
 
+#define STREAMER_CLOCK_FREE 0		/* clock-mode: a record every period */
+#define STREAMER_CLOCK_FALLING 1	/* a record on each falling edge of clock */
+#define STREAMER_CLOCK_RISING 2
+#define STREAMER_CLOCK_BOTH 3
+
 struct streamer {		/* in hal_malloc() memory, one per FIFO */
 	struct hal_fifo_hdr *hdr;	/* shared memory: update() is the consumer */
 	union hal_fifo_value *data;
@@ -18,6 +23,9 @@ struct streamer {		/* in hal_malloc() memory, one per FIFO */
 	hal_bit_t *empty;		/* written by update() */
 	hal_bit_t *enable;		/* read by update() */
 	hal_s32_t *underruns;		/* I/O pin: update() counts up, setp resets */
+	hal_bit_t *clock;		/* read by update() */
+	hal_s32_t *clock_mode;		/* read by update(): STREAMER_CLOCK_* */
+	bool last_clock;		/* private to update(): clock in the previous period */
 	int num_pins;
 	char type[HAL_FIFO_MAX_PINS];	/* enum hal_fifo_type per pin */
 	union fifo_pin_ptr pins[HAL_FIFO_MAX_PINS];

@@ -167,6 +167,24 @@ long rtapi_getpid(void);
 bool rtapi_process_exists(long pid);
 #endif
 
+#if defined(RTAPI) && !defined(__KERNEL__)
+/* --- the simulated flavor's extras, as LinuxCNC's uspace RTAPI has them (init and
+ * non-realtime code of out-of-tree modules; rtapi_extras_uspace.c) --- */
+#include <spawn.h>
+int rtapi_spawn_as_root(pid_t *pid, const char *path, const posix_spawn_file_actions_t *file_actions,
+			const posix_spawnattr_t *attrp, char *const argv[], char *const envp[]);
+int rtapi_spawnp_as_root(pid_t *pid, const char *path, const posix_spawn_file_actions_t *file_actions,
+			 const posix_spawnattr_t *attrp, char *const argv[], char *const envp[]);
+int rtapi_open_as_root(const char *filename, int mode);	/* fd, or -errno */
+int rtapi_is_realtime(void);		/* PREEMPT_RT kernel and SCHED_FIFO allowed */
+int rtapi_is_kernelspace(void);		/* 0 here */
+/* The calling task's next release time (ns, rtapi_get_time's clock), and a correction
+ * (ns, at most a tenth of the period either way) added to the following period only:
+ * what a driver that locks the thread to an external clock uses. */
+long long rtapi_task_pll_get_reference(void);
+int rtapi_task_pll_set_correction(long value);
+#endif
+
 /* --- non-realtime helper used by HAL to wait for threads to finish a cycle --- */
 void rtapi_sleep_ns(long long nsec);	/* init/cleanup/user code only */
 

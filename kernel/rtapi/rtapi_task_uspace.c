@@ -30,6 +30,7 @@ struct rtapi_task_rec {
 	int resync;			/* atomic: set by start/resume, cleared by the task */
 	long period_ns;			/* written by rtapi_task_start before it sets state */
 	long long next_ns;		/* next release; the task thread's own */
+	long pll_correction_ns;		/* added to the next period once; the task thread's own */
 	long long overruns;		/* atomic: written by the task thread */
 	pthread_mutex_t lock;		/* with 'wake': only to sleep while paused */
 	pthread_cond_t wake;
@@ -177,6 +178,7 @@ int rtapi_task_new(void (*taskcode)(void *), void *arg, int prio,
 	t->stop = 0;
 	t->resync = 0;
 	t->period_ns = 0;
+	t->pll_correction_ns = 0;
 	t->overruns = 0;
 	pthread_mutex_init(&t->lock, NULL);
 	pthread_cond_init(&t->wake, NULL);
@@ -290,6 +292,23 @@ long long rtapi_task_overruns(int task_id)
 	return __atomic_load_n(&t->overruns, __ATOMIC_RELAXED);
 }
 
+long long rtapi_task_pll_get_reference(void)
+{
+	return current_task ? current_task->next_ns : 0;
+}
+
+int rtapi_task_pll_set_correction(long value)
+{
+	struct rtapi_task_rec *t = current_task;
+
+	if (!t || t->period_ns <= 0)
+		return -EINVAL;
+	if (value > t->period_ns / 10 || value < -(t->period_ns / 10))
+		return -EINVAL;
+	t->pll_correction_ns = value;
+	return 0;
+}
+
 static void sleep_until(long long when_ns)
 {
 	struct timespec ts = { .tv_sec = when_ns / 1000000000LL, .tv_nsec = when_ns % 1000000000LL };
@@ -318,7 +337,8 @@ void rtapi_task_wait(void)
 		return;
 	}
 	period = t->period_ns;
-	t->next_ns += period;
+	t->next_ns += period + t->pll_correction_ns;
+	t->pll_correction_ns = 0;
 	now = rtapi_get_time();
 	late = now - t->next_ns;
 	if (late >= period) {		/* whole periods missed: count and skip them */

@@ -111,7 +111,9 @@ Result<void> write_file(const fs::path& file, const std::string& text)
     return {};
 }
 
-Result<Component> load_comp(const std::string& file)
+// Read and check a .comp. As halcompile does, the component must be named as its file
+// (the module is loaded by the file's name, its pins by the component's).
+Result<Component> load_comp(const std::string& file, const Options& o)
 {
     auto text = read_file(file);
     if (!text)
@@ -120,6 +122,13 @@ Result<Component> load_comp(const std::string& file)
     auto comp = parse_comp(*text, file, &warnings);
     if (!warnings.empty())
         std::fputs(warnings.c_str(), stderr);
+    if (!comp)
+        return comp;
+    std::string stem = fs::path(file).stem().string();
+    if (comp->name != stem)
+        return Error{-1, file + ":" + std::to_string(comp->line) + ": component name '" + comp->name +
+                             "' does not match the file name '" + stem + "': rename one of them"};
+    comp->max_personalities = o.personalities;
     return comp;
 }
 
@@ -166,32 +175,32 @@ struct Source {
     std::string compile_args, link_args;
 };
 
-Result<Source> prepare(const std::string& file, const fs::path& dir, bool force_userspace)
+Result<Source> prepare(const std::string& file, const fs::path& dir, const Options& o)
 {
+    bool force_userspace = o.userspace;
     Source s;
     s.module = fs::path(file).stem().string();
     if (ends_with(file, ".c")) {
         s.c_file = fs::absolute(file);
         s.userspace = force_userspace;
+        s.compile_args = o.extra_compile_args;
+        s.link_args = o.extra_link_args;
         fs::path fp = fs::absolute(file).parent_path() / (s.module + "_fp.c");
         if (fs::exists(fp))
             s.fp_file = fp;
         return s;
     }
-    auto comp = load_comp(file);
+    auto comp = load_comp(file, o);
     if (!comp)
         return comp.error();
-    if (comp->name != s.module)
-        std::fprintf(stderr, "%s: warning: component '%s' is built as module '%s' (the file name)\n",
-                     file.c_str(), comp->name.c_str(), s.module.c_str());
     s.userspace = force_userspace || comp->is_userspace();
     if (force_userspace && !comp->is_userspace())
         return Error{-1, file + ": --userspace given but the component has no 'option userspace'"};
     s.uses_fp = false;
     for (const Function& f : comp->functions)
         s.uses_fp = s.uses_fp || f.fp;
-    s.compile_args = comp->option_value("extra_compile_args");
-    s.link_args = comp->option_value("extra_link_args");
+    s.compile_args = comp->option_value("extra_compile_args") + " " + o.extra_compile_args;
+    s.link_args = comp->option_value("extra_link_args") + " " + o.extra_link_args;
     s.c_file = dir / (s.module + ".c");
     if (auto r = write_file(s.c_file, generate_c(*comp)); !r)
         return r.error();
@@ -223,6 +232,8 @@ Result<fs::path> compile_sim(const Source& s, const std::string& file, const Pat
     cmd.insert(cmd.end(), {"-o", out.string(), s.c_file.string()});
     if (!s.fp_file.empty() && s.fp_file != s.c_file)
         cmd.push_back(s.fp_file.string());
+    for (const auto& w : words(s.link_args))
+        cmd.push_back(w);
     if (auto r = run(cmd); !r)
         return Error{-1, file + ": compiling failed"};
     return out;
@@ -330,7 +341,7 @@ Result<void> do_build(const Options& o, const std::string& file, const Paths& p)
         return install_file(file, p.bin_dir, true);
     }
     TempDir tmp;
-    auto src = prepare(file, tmp.path(), o.userspace);
+    auto src = prepare(file, tmp.path(), o);
     if (!src)
         return src.error();
     bool kernel = !src->userspace && p.flavor == "kernel";
@@ -356,6 +367,32 @@ Result<void> do_build(const Options& o, const std::string& file, const Paths& p)
 
 }  // namespace
 
+// Where the halrun on PATH (else this comp) loads modules from: a run-in-place tree's
+// rtlib/ beside bin/, or an installed prefix's lib/hal/rtlib; else the compiled-in one.
+std::string halrun_module_dir()
+{
+    std::vector<fs::path> exes;
+    if (const char* path = std::getenv("PATH"))
+        for (const std::string& d : split_colon(path))
+            if (!d.empty() && fs::exists(fs::path(d) / "halrun")) {
+                exes.push_back(fs::path(d) / "halrun");
+                break;
+            }
+    std::error_code ec;
+    if (fs::path self = fs::read_symlink("/proc/self/exe", ec); !ec)
+        exes.push_back(self);
+    for (const fs::path& exe : exes) {
+        fs::path bin = fs::canonical(exe, ec).parent_path();
+        if (ec)
+            continue;
+        if (fs::is_directory(bin.parent_path() / "rtlib", ec))
+            return (bin.parent_path() / "rtlib").string();
+        if (fs::is_directory(bin.parent_path() / "lib/hal/rtlib", ec))
+            return (bin.parent_path() / "lib/hal/rtlib").string();
+    }
+    return COMP_INSTALL_RTLIB_DIR;
+}
+
 Paths find_paths()
 {
     Paths p;
@@ -375,7 +412,7 @@ Paths find_paths()
     if (p.ul_libs.empty())
         p.ul_libs = split_colon(fs::exists(COMP_INSTALL_UL_LIBS_PROBE) ? COMP_INSTALL_UL_LIBS
                                                                        : COMP_BUILD_UL_LIBS);
-    p.rtlib_dir = env_or("HAL_RTLIB_DIR", COMP_INSTALL_RTLIB_DIR);
+    p.rtlib_dir = env_or("HAL_RTLIB_DIR", halrun_module_dir());
     p.bin_dir = env_or("HAL_BIN_DIR", COMP_INSTALL_BIN_DIR);
     p.man9_dir = env_or("HAL_MAN_DIR", COMP_INSTALL_MAN9_DIR);
     std::string flavor = env_or("HAL_FLAVOR", "");
@@ -402,7 +439,7 @@ Result<void> process_file(const Options& o, const std::string& file, const Paths
     case Mode::InstallDoc: {
         if (!is_comp)
             return Error{-1, file + ": only a .comp file can be preprocessed or documented"};
-        auto comp = load_comp(file);
+        auto comp = load_comp(file, o);
         if (!comp)
             return comp.error();
         fs::path base = fs::path(file).replace_extension();

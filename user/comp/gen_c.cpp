@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <regex>
 #include <cstring>
 #include <sstream>
 
@@ -170,6 +171,8 @@ private:
             o_ << "#endif\n";
         o_ << "\n#define __COMP_MAX_INSTANCES " << kMaxInstances << "\n";
         o_ << "#define __COMP_MAX_COUNT " << kMaxCount << "\n";
+        if (c_.has_personality())
+            o_ << "#define __COMP_MAX_PERSONALITIES " << c_.max_personalities << "\n";
         init_attribute();
         shared_var("int comp_id", "");
     }
@@ -244,8 +247,8 @@ private:
                "names, __COMP_MAX_INSTANCES, " + c_quote("names of " + n + " instances (instead of count)"));
         }
         if (c_.has_personality())
-            mp("int personality[__COMP_MAX_INSTANCES]", "", "RTAPI_MP_ARRAY_INT",
-               "personality, __COMP_MAX_INSTANCES, " + c_quote("personality of each " + n + " instance"));
+            mp("int personality[__COMP_MAX_PERSONALITIES]", "", "RTAPI_MP_ARRAY_INT",
+               "personality, __COMP_MAX_PERSONALITIES, " + c_quote("personality of each " + n + " instance"));
         for (const ModParam& m : c_.modparams) {
             if (m.type == "dummy")
                 continue;
@@ -417,12 +420,26 @@ private:
         o_ << "\n";
     }
 
+    // As halcompile does: with one function and no FUNCTION() in the code, the code after
+    // ";;" is that function's body.
+    bool code_is_body() const
+    {
+        static const std::regex defines_function(R"(\bFUNCTION\s*\()");
+        return !c_.is_userspace() && c_.functions.size() == 1 &&
+               !std::regex_search(c_.code, defines_function);
+    }
+
     void user_code()
     {
+        bool wrap = code_is_body();
+        if (wrap)
+            o_ << "FUNCTION(" << c_.functions[0].name << ") {\n";
         o_ << "#line " << (c_.code_line ? c_.code_line : 1) << " " << c_quote(c_.file) << "\n";
         o_ << c_.code;
         if (!c_.code.empty() && c_.code.back() != '\n')
             o_ << "\n";
+        if (wrap)
+            o_ << "}\n";
     }
 
     void undef_macros()
@@ -515,7 +532,7 @@ private:
     {
         if (c_.has_personality())  // read before export() shadows the array with the instance's value
             o_ << "static __COMP_INIT int __comp_personality_of(long i)\n{\n"
-                  "\treturn i >= 0 && i < __COMP_MAX_INSTANCES ? personality[i] : 0;\n}\n\n";
+                  "\treturn i >= 0 && i < __COMP_MAX_PERSONALITIES ? personality[i] : 0;\n}\n\n";
         o_ << "/* Make one instance: its pins, params and functions named PREFIX.*;\n"
               " * extra_arg is the instance number. 0 or -errno (the caller hal_exit()s). */\n";
         o_ << "static __COMP_INIT int export(char *prefix, long extra_arg)\n{\n"

@@ -69,6 +69,7 @@ struct Component {
     std::string license, author, description, notes, see_also;
     std::string code;   // the C after ";;"
     int code_line = 0;  // line of the first line of code
+    int max_personalities = 64;  // size of personality=, comp --personalities=N
 
     const Option* find_option(const std::string& name) const;
     bool option_on(const std::string& name) const;        // present and not no/false/0

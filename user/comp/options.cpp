@@ -4,6 +4,24 @@
 
 namespace hal::comp {
 
+namespace {
+
+Result<void> set_personalities(Options& o, const std::string& v)
+{
+    int n = 0;
+    bool ok = !v.empty() && v.size() <= 4;
+    for (char c : v) {
+        ok = ok && c >= '0' && c <= '9';
+        n = n * 10 + (c - '0');
+    }
+    if (!ok || n < 1 || n > 1024)
+        return Error{-1, "--personalities=" + v + ": give a number of personalities, 1..1024"};
+    o.personalities = n;
+    return {};
+}
+
+}  // namespace
+
 Result<Options> parse_options(std::span<char*> argv)
 {
     Options o;
@@ -38,6 +56,24 @@ Result<Options> parse_options(std::span<char*> argv)
             o.output = argv[++i];
         } else if (a.rfind("--outfile=", 0) == 0) {
             o.output = a.substr(10);
+        } else if (a.rfind("--extra-compile-args=", 0) == 0) {
+            o.extra_compile_args += (o.extra_compile_args.empty() ? "" : " ") + a.substr(21);
+        } else if (a.rfind("--extra-link-args=", 0) == 0) {
+            o.extra_link_args += (o.extra_link_args.empty() ? "" : " ") + a.substr(18);
+        } else if (a == "--extra-compile-args" || a == "--extra-link-args" || a == "--personalities") {
+            if (i + 1 >= argv.size())
+                return Error{-1, a + " needs a value"};
+            std::string v = argv[++i];
+            if (a == "--personalities") {
+                if (auto r = set_personalities(o, v); !r)
+                    return r.error();
+            } else {
+                std::string& dst = a == "--extra-link-args" ? o.extra_link_args : o.extra_compile_args;
+                dst += (dst.empty() ? "" : " ") + v;
+            }
+        } else if (a.rfind("--personalities=", 0) == 0) {
+            if (auto r = set_personalities(o, a.substr(16)); !r)
+                return r.error();
         } else {
             return Error{-1, "unknown option '" + a + "'"};
         }
@@ -65,6 +101,8 @@ std::string usage(const std::string& prog)
            "  --install     build it and install it into the module directory ($HAL_RTLIB_DIR)\n"
            "  --document    FILE.comp -> FILE.9 man page; --view-doc shows it; --install-doc installs it\n"
            "  --userspace   build a userspace component program instead of a realtime module\n"
+           "  --extra-compile-args=ARGS, --extra-link-args=ARGS  more compiler / linker arguments\n"
+           "  --personalities=N  personality= takes up to N values (default 64)\n"
            "environment: HAL_INCLUDE_DIR (headers), HAL_RTLIB_DIR (modules), HAL_BIN_DIR,\n"
            "  HAL_MAN_DIR, HAL_FLAVOR (sim|kernel), KDIR, HAL_KMOD_BUILD, CC\n";
 }

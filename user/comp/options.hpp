@@ -20,6 +20,9 @@ struct Options {
     bool userspace = false;
     bool help = false;
     std::string output;              // -o: only with one input file
+    std::string extra_compile_args;  // --extra-compile-args=ARGS: added to the compiler's
+    std::string extra_link_args;     // --extra-link-args=ARGS: added when linking
+    int personalities = 64;          // --personalities=N: size of the personality= array
     std::vector<std::string> files;
 };
 

@@ -42,6 +42,8 @@ double value_of(char type, const hal_fifo_value& v)
     case HAL_FIFO_BIT: return v.u ? 1.0 : 0.0;
     case HAL_FIFO_S32: return static_cast<double>(static_cast<int32_t>(v.s));
     case HAL_FIFO_U32: return static_cast<double>(static_cast<uint32_t>(v.u));
+    case HAL_FIFO_S64: return static_cast<double>(static_cast<int64_t>(v.s));
+    case HAL_FIFO_U64: return static_cast<double>(static_cast<uint64_t>(v.u));
     default: return 0.0;
     }
 }

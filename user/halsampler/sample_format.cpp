@@ -32,6 +32,12 @@ std::string format_sample(std::string_view cfg, const hal_fifo_value* rec, bool 
         case HAL_FIFO_U32:
             std::snprintf(buf, sizeof(buf), "%" PRIu32 " ", static_cast<uint32_t>(v[m].u));
             break;
+        case HAL_FIFO_S64:
+            std::snprintf(buf, sizeof(buf), "%" PRId64 " ", static_cast<int64_t>(v[m].s));
+            break;
+        case HAL_FIFO_U64:
+            std::snprintf(buf, sizeof(buf), "%" PRIu64 " ", static_cast<uint64_t>(v[m].u));
+            break;
         default:
             std::snprintf(buf, sizeof(buf), "? ");
             break;

@@ -40,6 +40,8 @@ const char* type_name(hal_fifo_type t)
     case HAL_FIFO_BIT: return "bit (0 or 1)";
     case HAL_FIFO_S32: return "s32";
     case HAL_FIFO_U32: return "u32";
+    case HAL_FIFO_S64: return "s64";
+    case HAL_FIFO_U64: return "u64";
     default: return "?";
     }
 }
@@ -70,6 +72,22 @@ bool parse_value(hal_fifo_type t, const std::string& field, hal_fifo_value& v)
             return false;  // strtoul would wrap it around
         unsigned long long u = std::strtoull(field.c_str(), &end, 10);
         if (*end || errno || u > UINT32_MAX)
+            return false;
+        v.u = u;
+        return true;
+    }
+    case HAL_FIFO_S64: {
+        long long s = std::strtoll(field.c_str(), &end, 10);
+        if (*end || errno || field.empty())
+            return false;
+        v.s = s;
+        return true;
+    }
+    case HAL_FIFO_U64: {
+        if (field[0] == '-')
+            return false;
+        unsigned long long u = std::strtoull(field.c_str(), &end, 10);
+        if (*end || errno || field.empty())
             return false;
         v.u = u;
         return true;

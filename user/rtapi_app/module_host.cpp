@@ -171,7 +171,7 @@ Result<void> ModuleHost::load(const std::string& name, const std::vector<ModuleA
     const rtapi_mp_desc** descs = nullptr;
     int count = rtapi_mp_collect_end(&descs);
     if (!handle)
-        return module_error(-ENOEXEC, name, dl_error);
+        return module_error(-ENOEXEC, name, "dlopen: " + dl_error);  // the prefix LinuxCNC prints
     if (count < 0)
         return module_error(count, name, "cannot collect its module parameters");
     if (auto r = apply_args(name, args, descs, count); !r)

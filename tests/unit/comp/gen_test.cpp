@@ -75,12 +75,26 @@ TEST(CompGenerate, SingletonPersonalityAndOptions)
         "component logic;\noption personality;\noption extra_setup;\noption extra_cleanup;\n"
         "pin in bit in-##[16 : personality & 0xff];\npin out bit and if personality & 0x100;\n"
         "modparam int depth = 3 \"d\";\nfunction _ nofp;\nlicense \"GPL\";\n;;\n"));
-    EXPECT_TRUE(contains(p, "RTAPI_MP_ARRAY_INT(personality, __COMP_MAX_INSTANCES"));
+    EXPECT_TRUE(contains(p, "#define __COMP_MAX_PERSONALITIES 64\n"));
+    EXPECT_TRUE(contains(p, "RTAPI_MP_ARRAY_INT(personality, __COMP_MAX_PERSONALITIES"));
     EXPECT_TRUE(contains(p, "for (j = 0; j < (personality & 0xff); j++)"));
     EXPECT_TRUE(contains(p, "if (personality & 0x100) {"));
     EXPECT_TRUE(contains(p, "r = extra_setup(inst, prefix, extra_arg);"));
     EXPECT_TRUE(contains(p, "\textra_cleanup();\n\thal_exit(comp_id);"));
     EXPECT_TRUE(contains(p, "static int depth = 3;\nRTAPI_MP_INT(depth, \"d\");"));
+}
+
+TEST(CompGenerate, LoneFunctionBodyWithoutFunctionMacroIsWrapped)
+{
+    std::string body = generate_c(parse(
+        "component twice;\npin in s32 in;\npin out s32 out;\nfunction _ nofp;\nlicense \"GPL\";\n;;\n"
+        "out = 2 * in;\n"));
+    EXPECT_TRUE(contains(body, "FUNCTION(_) {\n#line 7 "));
+    EXPECT_TRUE(contains(body, "out = 2 * in;\n}\n"));
+    std::string full = generate_c(parse(
+        "component twice;\npin out s32 out;\nfunction _ nofp;\nlicense \"GPL\";\n;;\n"
+        "FUNCTION(_) { out = 2; }\n"));
+    EXPECT_FALSE(contains(full, "FUNCTION(_) {\n#line"));
 }
 
 TEST(CompGenerate, UserspaceHasMainAndNoModuleParams)

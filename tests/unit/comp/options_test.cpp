@@ -49,4 +49,16 @@ TEST(CompOptions, RefusesConflictsAndUnknowns)
     EXPECT_EQ(parse({}).error().message, "no input file (give a .comp, .c or .py file)");
     EXPECT_EQ(parse({"-o", "y", "a.comp", "b.comp"}).error().message, "-o needs exactly one input file");
     EXPECT_EQ(parse({"x.comp", "-o"}).error().message, "-o needs a file name");
+    EXPECT_EQ(parse({"--personalities=0", "x.comp"}).error().message,
+              "--personalities=0: give a number of personalities, 1..1024");
+}
+
+TEST(CompOptions, ExtraArgsAndPersonalities)
+{
+    auto o = parse({"--extra-compile-args=-DA=1", "--extra-compile-args", "-DB", "--extra-link-args=-lm",
+                    "--personalities=8", "x.comp"});
+    ASSERT_TRUE(o);
+    EXPECT_EQ(o->extra_compile_args, "-DA=1 -DB");
+    EXPECT_EQ(o->extra_link_args, "-lm");
+    EXPECT_EQ(o->personalities, 8);
 }

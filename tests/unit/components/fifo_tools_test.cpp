@@ -174,6 +174,30 @@ TEST(HalstreamerLine, BadValuesAreNamed)
     EXPECT_FALSE(hal::parse_stream_line("f", "1e999"));
 }
 
+TEST(HalstreamerLine, SixtyFourBitTypesTakeTheirFullRange)
+{
+    auto v = hal::parse_stream_line("lk", "-9223372036854775808 18446744073709551615\n");
+    ASSERT_TRUE(v);
+    EXPECT_EQ((*v)[0].s, INT64_MIN);
+    EXPECT_EQ((*v)[1].u, UINT64_MAX);
+    EXPECT_FALSE(hal::parse_stream_line("l", "9223372036854775808"));
+    EXPECT_FALSE(hal::parse_stream_line("k", "-1"));
+    EXPECT_FALSE(hal::parse_stream_line("k", "18446744073709551616"));
+    auto e = hal::parse_stream_line("k", "x");
+    ASSERT_FALSE(e);
+    EXPECT_EQ(e.error().message, "value 1 'x' is not a valid u64");
+}
+
+TEST(HalsamplerFormat, SixtyFourBitValuesPrintInDecimal)
+{
+    hal_fifo_value rec[4];
+    rec[HAL_FIFO_REC_SAMPLE].s = 0;
+    rec[HAL_FIFO_REC_FLAGS].u = 0;
+    rec[2].s = INT64_MIN;
+    rec[3].u = UINT64_MAX;
+    EXPECT_EQ(hal::format_sample("LK", rec, false), "-9223372036854775808 18446744073709551615 \n");
+}
+
 TEST(HalstreamerLine, BlankLinesAreRecognised)
 {
     EXPECT_TRUE(hal::is_blank_line(" \t\r\n"));

@@ -156,7 +156,7 @@ TEST_F(FifoParams, BadCharacterIsNamed)
     char* cfg[HAL_FIFO_MAX_FIFOS] = {a};
     int depth[HAL_FIFO_MAX_FIFOS] = {10};
     EXPECT_EQ(fifo_module_count("streamer", cfg, depth), -EINVAL);
-    EXPECT_EQ(last_message, "streamer: cfg= string 1 'fbx': bad character 'x', use f, b, s or u\n");
+    EXPECT_EQ(last_message, "streamer: cfg= string 1 'fbx': bad character 'x', use f, b, s, u, l (s64) or k (u64)\n");
 }
 
 TEST_F(FifoParams, TooManyPinsAreRefused)

@@ -48,6 +48,8 @@ TEST(StreamerFifo, TypeCharactersAreCaseInsensitive)
     EXPECT_EQ(hal_fifo_type_of('B'), HAL_FIFO_BIT);
     EXPECT_EQ(hal_fifo_type_of('s'), HAL_FIFO_S32);
     EXPECT_EQ(hal_fifo_type_of('U'), HAL_FIFO_U32);
+    EXPECT_EQ(hal_fifo_type_of('l'), HAL_FIFO_S64);
+    EXPECT_EQ(hal_fifo_type_of('K'), HAL_FIFO_U64);
     EXPECT_EQ(hal_fifo_type_of('x'), HAL_FIFO_BAD);
 }
 
