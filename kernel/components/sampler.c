@@ -21,6 +21,7 @@ RTAPI_MP_ARRAY_INT(depth, HAL_FIFO_MAX_FIFOS, "samples each FIFO holds");
 
 struct sampler {		/* in hal_malloc() memory, one per FIFO */
 	struct hal_fifo_hdr *hdr;	/* shared memory: sample() is the producer */
+	struct hal_fifo_rt fifo;	/* sample()'s own geometry and 'in': never from hdr */
 	union hal_fifo_value *data;
 	hal_bit_t *enable;		/* read by sample() */
 	hal_s32_t *curr_depth;		/* written by sample() */
@@ -50,7 +51,7 @@ static void sample(void *arg, long period_ns)
 	int m;
 
 	if (*s->enable) {
-		rec = hal_fifo_write_slot(s->hdr, s->data);
+		rec = hal_fifo_rt_write_slot(s->hdr, &s->fifo, s->data);
 		if (!rec) {
 			s->overruns = next_s32(s->overruns);
 			s->gap = true;
@@ -74,14 +75,14 @@ static void sample(void *arg, long period_ns)
 					break;
 				}
 			}
-			hal_fifo_write_done(s->hdr);
+			hal_fifo_rt_write_done(s->hdr, &s->fifo);
 			s->gap = false;
 		}
 		s->sample_num = next_s32(s->sample_num);
 	}
-	used = hal_fifo_used(s->hdr);
+	used = hal_fifo_rt_used(s->hdr, &s->fifo, 1);
 	*s->curr_depth = (hal_s32_t)used;
-	*s->full = used >= s->hdr->depth;
+	*s->full = used >= s->fifo.slots - 1;
 }
 
 static int sampler_export(struct fifo_module *fm, void *mem, int n)
@@ -96,6 +97,7 @@ static int sampler_export(struct fifo_module *fm, void *mem, int n)
 	s->hdr = fm->shm[n].hdr;
 	s->data = fm->shm[n].data;
 	s->num_pins = hal_fifo_cfg_pins(cfg[n]);
+	hal_fifo_rt_init(&s->fifo, (rtapi_u32)depth[n], (rtapi_u32)s->num_pins);
 	for (m = 0; m < s->num_pins; m++)
 		s->type[m] = hal_fifo_type_of(cfg[n][m]);
 	err = fifo_pins_export(s->pins, fm->comp_id, "sampler", n, cfg[n], HAL_IN);

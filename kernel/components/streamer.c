@@ -21,6 +21,7 @@ RTAPI_MP_ARRAY_INT(depth, HAL_FIFO_MAX_FIFOS, "samples each FIFO holds");
 
 struct streamer {		/* in hal_malloc() memory, one per FIFO */
 	struct hal_fifo_hdr *hdr;	/* shared memory: update() is the consumer */
+	struct hal_fifo_rt fifo;	/* update()'s own geometry and 'out': never from hdr */
 	union hal_fifo_value *data;
 	hal_s32_t *curr_depth;		/* written by update() */
 	hal_bit_t *empty;		/* written by update() */
@@ -43,7 +44,7 @@ static void update(void *arg, long period_ns)
 	int m;
 
 	if (*s->enable) {
-		rec = hal_fifo_read_slot(s->hdr, s->data);
+		rec = hal_fifo_rt_read_slot(s->hdr, &s->fifo, s->data);
 		if (!rec) {
 			*s->underruns = (hal_s32_t)((rtapi_u32)*s->underruns + 1u);
 		} else {
@@ -64,10 +65,10 @@ static void update(void *arg, long period_ns)
 					break;
 				}
 			}
-			hal_fifo_read_done(s->hdr);
+			hal_fifo_rt_read_done(s->hdr, &s->fifo);
 		}
 	}
-	used = hal_fifo_used(s->hdr);
+	used = hal_fifo_rt_used(s->hdr, &s->fifo, 0);
 	*s->curr_depth = (hal_s32_t)used;
 	*s->empty = used == 0;
 }
@@ -84,6 +85,7 @@ static int streamer_export(struct fifo_module *fm, void *mem, int n)
 	s->hdr = fm->shm[n].hdr;
 	s->data = fm->shm[n].data;
 	s->num_pins = hal_fifo_cfg_pins(cfg[n]);
+	hal_fifo_rt_init(&s->fifo, (rtapi_u32)depth[n], (rtapi_u32)s->num_pins);
 	for (m = 0; m < s->num_pins; m++)
 		s->type[m] = hal_fifo_type_of(cfg[n][m]);
 	err = fifo_pins_export(s->pins, fm->comp_id, "streamer", n, cfg[n], HAL_OUT);

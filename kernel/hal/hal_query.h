@@ -119,6 +119,11 @@ int hal_set_pin_value(const char *name, const union hal_value *v);
 int hal_set_param_value(const char *name, const union hal_value *v);
 int hal_set_sig_value(const char *name, const union hal_value *v);
 
+/* Before unloading a kernel module: take the functions of its components off every
+ * thread (its module reference is dropped once no thread runs them). module "" = every
+ * module. Returns the number of its components, or -errno. */
+int hal_release_module(const char *module);
+
 bool hal_threads_running(void);
 /* Base period set by the first thread, 0 if none. */
 long long hal_base_period(void);
