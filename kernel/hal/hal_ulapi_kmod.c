@@ -24,7 +24,13 @@ int hal_kmod_map(char **base)
 	void *ro, *rw;
 	int err;
 
-	dev_fd = open("/dev/" RTAPI_DEVICE_NAME, O_RDWR | O_CLOEXEC);
+	int tries;
+
+	/* Just after loadrt loaded rtapi.ko, udev may not have given the node its group
+	 * yet (firmware/udev/): wait for it a little. */
+	for (tries = 0; (dev_fd = open("/dev/" RTAPI_DEVICE_NAME, O_RDWR | O_CLOEXEC)) < 0 &&
+			(errno == EACCES || errno == ENOENT) && tries < 40; tries++)
+		usleep(50000);
 	if (dev_fd < 0) {
 		err = errno;
 		rtapi_print_msg(RTAPI_MSG_ERR, "HAL: cannot open /dev/%s: %s%s\n", RTAPI_DEVICE_NAME,

@@ -90,6 +90,8 @@ done
 cp "$here/run-hal-tests-vm.sh" "$ird/tests/"
 cc -static -O2 -Wall -I"$root/kernel/rtapi" -I"$root/kernel/hal" \
 	-o "$out/initramfs/tests/hal_segcheck" "$here/hal_segcheck.c"
+cc -static -O2 -Wall -Werror -I"$root/kernel/rtapi" -I"$root/kernel/hal" -I"$root/kernel/components" \
+	-o "$out/initramfs/tests/hal_exploit" "$here/hal_exploit.c"
 cp "$here/init.sh" "$ird/init"
 cp "$cases"/*.sh "$ird/tests/cases/"
 if [ -n "${KTEST_BENCH:-}" ]; then	# the standard workloads, generated here (bash)
