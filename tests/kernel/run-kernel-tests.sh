@@ -93,6 +93,8 @@ done
 cp "$here/run-hal-tests-vm.sh" "$ird/tests/"
 cc -static -O2 -Wall -I"$root/kernel/rtapi" -I"$root/kernel/hal" \
 	-o "$out/initramfs/tests/hal_segcheck" "$here/hal_segcheck.c"
+cc -static -O2 -Wall -Werror -I"$root/kernel/rtapi" -I"$root/kernel/hal" -I"$root/kernel/components" \
+	-o "$out/initramfs/tests/hal_exploit" "$here/hal_exploit.c"
 cp "$here/init.sh" "$ird/init"
 # Accounts (busybox su): group hal with the member haluser (uid 1000); nobody (65534)
 # is in no group of ours. 06-helper-group makes the helper 4750 root:hal.
