@@ -8,21 +8,16 @@ mount -t proc proc /proc
 mount -t sysfs sysfs /sys
 mount -t devtmpfs devtmpfs /dev
 export PATH=/bin:/sbin:/tests PATH_MOD=/lib/hal/modules/$(uname -r)
-# Users as docs/kernel-security.md describes them: group 'hal' (gid 1000) with user
-# 'halu' (uid 1000) in it, 'nobody' (65534) outside it; the helper 4750 root:hal, and
-# mdev as the hotplug helper applies what firmware/udev/60-hal.rules says for udev.
-mkdir -p /etc /home/halu
-echo 'root:x:0:0:root:/:/bin/sh
-halu:x:1000:1000:hal user:/home/halu:/bin/sh
-nobody:x:65534:65534:nobody:/:/bin/sh' >/etc/passwd
-echo 'root:x:0:
-hal:x:1000:halu
-nogroup:x:65534:' >/etc/group
-echo 'rtapi 0:1000 660' >/etc/mdev.conf
+# Users as docs/kernel-security.md describes them (accounts made by run-kernel-tests.sh):
+# group 'hal' (gid 990) with user 'haluser' (uid 1000) in it, 'nobody' (65534) outside
+# it; the helper 4750 root:hal, and mdev as the hotplug helper applies what
+# firmware/udev/60-hal.rules says for udev (/dev/rtapi 0660 root:hal).
+mkdir -p /home/haluser
+echo 'rtapi 0:990 660' >/etc/mdev.conf
 echo /bin/mdev >/proc/sys/kernel/hotplug
-chown 0:1000 /bin/emc_module_helper && chmod 4750 /bin/emc_module_helper
+chown 0:990 /bin/emc_module_helper && chmod 4750 /bin/emc_module_helper
 chmod 1777 /tmp
-chown -R 1000:1000 /home/halu /tests/hal
+chown -R 1000:1000 /home/haluser /tests/hal
 echo
 pass=0 fail=0
 for t in /tests/cases/*.sh; do

@@ -100,7 +100,7 @@ cp "$here/init.sh" "$ird/init"
 # is in no group of ours. 06-helper-group makes the helper 4750 root:hal.
 mkdir -p "$ird/etc"
 [ -e "$ird/etc/passwd" ] || printf '%s\n' 'root:x:0:0:root:/:/bin/sh' \
-	'haluser:x:1000:1000:hal member:/tmp:/bin/sh' 'nobody:x:65534:65534:nobody:/:/bin/sh' >"$ird/etc/passwd"
+	'haluser:x:1000:1000:hal member:/home/haluser:/bin/sh' 'nobody:x:65534:65534:nobody:/:/bin/sh' >"$ird/etc/passwd"
 [ -e "$ird/etc/group" ] || printf '%s\n' 'root:x:0:' 'hal:x:990:haluser' 'haluser:x:1000:' \
 	'nogroup:x:65534:' >"$ird/etc/group"
 cp "$cases"/*.sh "$ird/tests/cases/"

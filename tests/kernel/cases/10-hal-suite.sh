@@ -2,4 +2,4 @@
 # and emc_module_helper as a user would run it.
 # As a member of group 'hal', not root (issue 9): everything goes through the
 # helper and the /dev/rtapi interface.
-su halu -s /bin/sh -c "cd /home/halu && PATH=$PATH sh /tests/run-hal-tests-vm.sh /tests/hal"
+su haluser -s /bin/sh -c "cd /home/haluser && PATH=$PATH sh /tests/run-hal-tests-vm.sh /tests/hal"

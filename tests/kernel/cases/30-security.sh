@@ -6,11 +6,11 @@
 #  - a module whose function is on a running thread cannot be unloaded under it;
 #  - two loadrt's at once, 100 times, leave each module its own components and memory.
 check() { if ! eval "$1"; then echo "FAILED: $1"; exit 1; fi; }
-asu() { su halu -s /bin/sh -c "cd /home/halu && PATH=$PATH HAL_FLAVOR=kernel $1"; }
+asu() { su haluser -s /bin/sh -c "cd /home/haluser && PATH=$PATH HAL_FLAVOR=kernel $1"; }
 oops() { dmesg | grep -E 'Oops|general protection|BUG:|Call Trace' ; }
 
 asu 'halcmd loadrt threads name1=t period1=1000000 && halcmd loadrt siggen && halcmd loadrt sampler cfg=ff depth=64 && halcmd net s siggen.0.sine sampler.0.pin.0 && halcmd addf siggen.0.update t && halcmd addf sampler.0 t && halcmd start'
-check 'test "$(stat -c %a:%g /dev/rtapi)" = 660:1000'
+check 'test "$(stat -c %a:%g /dev/rtapi)" = 660:990'
 check '! setpriv --reuid=65534 --regid=65534 --clear-groups sh -c "exec 3</dev/rtapi" 2>/dev/null'
 check '! setpriv --reuid=65534 --regid=65534 --clear-groups /bin/emc_module_helper remove siggen 2>/dev/null'
 check 'setpriv --reuid=65534 --regid=65534 --clear-groups env HAL_FLAVOR=kernel halcmd show comp 2>&1 | grep -q "group .hal."'
@@ -34,7 +34,7 @@ sleep 1
 check 'grep -q holding /tmp/hold.out'
 kill -9 $(pidof hal_exploit)
 sleep 1
-check 'timeout 20 su halu -s /bin/sh -c "HAL_FLAVOR=kernel halcmd show comp" >/dev/null'
+check 'timeout 20 su haluser -s /bin/sh -c "HAL_FLAVOR=kernel halcmd show comp" >/dev/null'
 check 'dmesg | grep -q "went away holding the HAL mutex: released"'
 
 # unloading a module whose function is running: refused, never freed under the thread
