@@ -21,7 +21,15 @@ void hal_lock_set_liveness_check(bool (*alive)(int pid))
 	pid_alive = alive ? alive : hal_os_pid_alive;
 }
 
-/* Record 'self' as the holder: the mutex is ours. */
+/* The mutex word: 0 free, else (holder's pid << 8) | 1, written in one atomic step,
+ * so a holder killed at any instant is known by its pid (a word without one, 1, was
+ * taken by something that did not say who: it is waited for, never taken over). The
+ * pid and name beside it are for messages only. */
+static unsigned long word_of(int pid)
+{
+	return ((unsigned long)(unsigned)pid << 8) | 1ul;
+}
+
 static void set_holder(struct hal_seg_hdr *seg, int self, const char *name)
 {
 	rtapi_snprintf(seg->mutex_holder, sizeof(seg->mutex_holder), "%s", name);
@@ -30,21 +38,21 @@ static void set_holder(struct hal_seg_hdr *seg, int self, const char *name)
 
 int hal_lock_try(struct hal_seg_hdr *seg, int self, const char *name, int *dead_pid)
 {
-	rtapi_s32 pid;
+	unsigned long seen = 0;
+	int pid;
 
 	*dead_pid = 0;
-	if (!rtapi_mutex_try(&seg->mutex)) {
+	if (__atomic_compare_exchange_n(&seg->mutex, &seen, word_of(self), false, __ATOMIC_ACQUIRE,
+					__ATOMIC_RELAXED)) {
 		set_holder(seg, self, name);
 		return 0;
 	}
-	/* The holder writes its pid just after taking the word and clears it just before
-	 * giving it back, so a pid seen here is a holder (0: between the two, wait). */
-	pid = __atomic_load_n(&seg->mutex_pid, __ATOMIC_ACQUIRE);
+	pid = (int)(seen >> 8);
 	if (pid <= 0 || pid == self || pid_alive(pid))
 		return -EBUSY;
 	/* Dead holder: take the mutex over from it. Only one waiter wins the exchange. */
-	if (!__atomic_compare_exchange_n(&seg->mutex_pid, &pid, self, false, __ATOMIC_ACQ_REL,
-					 __ATOMIC_ACQUIRE))
+	if (!__atomic_compare_exchange_n(&seg->mutex, &seen, word_of(self), false, __ATOMIC_ACQUIRE,
+					 __ATOMIC_RELAXED))
 		return -EBUSY;
 	*dead_pid = pid;
 	set_holder(seg, self, name);
@@ -53,8 +61,8 @@ int hal_lock_try(struct hal_seg_hdr *seg, int self, const char *name, int *dead_
 
 void hal_lock_give(struct hal_seg_hdr *seg)
 {
-	__atomic_store_n(&seg->mutex_pid, 0, __ATOMIC_RELEASE);
-	rtapi_mutex_give(&seg->mutex);
+	__atomic_store_n(&seg->mutex_pid, 0, __ATOMIC_RELAXED);
+	__atomic_store_n(&seg->mutex, 0ul, __ATOMIC_RELEASE);
 }
 
 void hal_lock_seg(struct hal_seg_hdr *seg)

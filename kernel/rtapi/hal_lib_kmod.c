@@ -191,10 +191,11 @@ static long hook_ioctl(unsigned long *state, unsigned int cmd, unsigned long arg
 		return 0;
 	case HAL_IOC_RECOVER: {
 		/* halcmd -R: free the mutex only from a holder that is gone. */
-		int pid = READ_ONCE(hal_seg->mutex_pid), dead;
+		unsigned long word = READ_ONCE(hal_seg->mutex);
+		int pid = (int)(word >> 8), dead;	/* the holder's pid is in the word (hal_lock.c) */
 		char name[16];
 
-		if (!READ_ONCE(hal_seg->mutex))
+		if (!word)
 			return 0;
 		if (pid > 0 && hal_os_pid_alive(pid)) {
 			rtapi_print_msg(RTAPI_MSG_ERR, "HAL: the HAL mutex is held by pid %d (%s), which "

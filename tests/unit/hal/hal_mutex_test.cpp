@@ -81,7 +81,7 @@ TEST_F(HalMutex, ADeadHolderIsRecoveredOnceAndNamed)
 TEST_F(HalMutex, AHolderNotYetRecordedIsNotTakenOver)
 {
     int dead;
-    seg_->mutex = 1;   // taken, pid not written yet
+    seg_->mutex = 1;   // taken by something that recorded no pid
     dead_pids().insert(0);
     EXPECT_EQ(hal_lock_try(seg_, 202, "rtapi_app", &dead), -EBUSY);
 }

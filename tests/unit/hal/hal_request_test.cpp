@@ -198,4 +198,76 @@ TEST_F(HalRequest, TypedWritesCheckTheObjectsTypeAndWriter)
     EXPECT_EQ(run(p), -ENOENT);
 }
 
+TEST_F(HalRequest, AliasAndUnaliasAreRequestsWithACheckedKind)
+{
+    rtapi_u32 mem;
+    int id = comp("u", 100, &mem);
+    ASSERT_EQ(pin(id, mem), 0);
+    struct hal_req a = req(HAL_REQ_ALIAS, "u.p", "u.other");
+    a.arg = 2;   // neither pin (0) nor param (1)
+    hal_test::MsgCapture msgs;
+    EXPECT_EQ(run(a), -EINVAL);
+    EXPECT_THAT(msgs.text(), HasSubstr("alias kind 2 is not valid"));
+    a.arg = 0;
+    EXPECT_EQ(run(a), 0);
+    EXPECT_EQ(hal_seg->alias_count, 1u);
+    EXPECT_NE(hal_index_find(hal_seg, HAL_KIND_PIN, "u.other"), nullptr);
+    struct hal_req un = req(HAL_REQ_UNALIAS, "u.other");
+    EXPECT_EQ(run(un), 0);
+    EXPECT_EQ(hal_seg->alias_count, 0u);
+    EXPECT_EQ(run(un), -ENOENT);
+    struct hal_req lock = req(HAL_REQ_SET_LOCK);
+    lock.arg = HAL_LOCK_CONFIG;
+    ASSERT_EQ(run(lock), 0);
+    EXPECT_EQ(run(a), -EPERM);   // a locked HAL keeps its names
+}
+
+TEST_F(HalRequest, SetExactOnlyBeforeTheFirstThread)
+{
+    struct hal_req r = req(HAL_REQ_SET_EXACT);
+    EXPECT_EQ(run(r), 0);
+    EXPECT_EQ(hal_seg->exact_periods, 1u);
+    hal_seg->count[HAL_KIND_THREAD] = 1;   // as if a thread existed
+    hal_test::MsgCapture msgs;
+    EXPECT_EQ(run(r), -EBUSY);
+    EXPECT_THAT(msgs.text(), HasSubstr("a thread exists already"));
+    hal_seg->count[HAL_KIND_THREAD] = 0;
+}
+
+TEST_F(HalRequest, RemoveDeadTakesOnlyComponentsWhoseProcessIsGone)
+{
+    pid_t child = fork();
+    if (child == 0)
+        _exit(0);
+    ASSERT_GT(child, 0);
+    waitpid(child, nullptr, 0);
+    rtapi_u32 mem;
+    int live = comp("live", static_cast<int>(getpid()), &mem);
+    int dead = comp("dead", static_cast<int>(child), &mem);
+    struct hal_req r = req(HAL_REQ_COMP_REMOVE_DEAD);
+    r.comp_id = live;
+    EXPECT_EQ(run(r, 300), -EBUSY);
+    r.comp_id = 9999;
+    EXPECT_EQ(run(r, 300), -ENOENT);
+    r.comp_id = 0;   // every dead one
+    EXPECT_EQ(run(r, 300), 1);
+    EXPECT_EQ(hal_seg->count[HAL_KIND_COMP], 1u);
+    r.comp_id = dead;
+    EXPECT_EQ(run(r, 300), -ENOENT);
+}
+
+TEST_F(HalRequest, SixtyFourBitValuesAreStoredWhole)
+{
+    struct hal_req s = req(HAL_REQ_SIG_NEW, "big");
+    s.type = HAL_U64;
+    ASSERT_EQ(run(s), 0);
+    struct hal_req w = req(HAL_REQ_SET_SIG, "big");
+    w.type = HAL_U64;
+    w.value = 0x123456789abcdef0ull;
+    EXPECT_EQ(run(w), 0);
+    auto* sig = reinterpret_cast<struct hal_sig_rec*>(hal_index_find(hal_seg, HAL_KIND_SIG, "big"));
+    ASSERT_NE(sig, nullptr);
+    EXPECT_EQ(hal_sig_value(sig)->raw, 0x123456789abcdef0ull);
+}
+
 }  // namespace
