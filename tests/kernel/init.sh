@@ -10,11 +10,12 @@ mount -t devtmpfs devtmpfs /dev
 export PATH=/bin:/sbin:/tests PATH_MOD=/lib/hal/modules/$(uname -r)
 # Users as docs/kernel-security.md describes them (accounts made by run-kernel-tests.sh):
 # group 'hal' (gid 990) with user 'haluser' (uid 1000) in it, 'nobody' (65534) outside
-# it; the helper 4750 root:hal, and mdev as the hotplug helper applies what
-# firmware/udev/60-hal.rules says for udev (/dev/rtapi 0660 root:hal).
+# it; the helper 4750 root:hal, and mdev applies what firmware/udev/60-hal.rules
+# says for udev (/dev/rtapi 0660 root:hal).
 mkdir -p /home/haluser
+# (Debian's kernels have no uevent helper: mdev listens on netlink, as udevd would.)
 echo 'rtapi 0:990 660' >/etc/mdev.conf
-echo /bin/mdev >/proc/sys/kernel/hotplug
+mdev -d
 chown 0:990 /bin/emc_module_helper && chmod 4750 /bin/emc_module_helper
 chmod 1777 /tmp
 chown -R 1000:1000 /home/haluser /tests/hal
