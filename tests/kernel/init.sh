@@ -10,12 +10,16 @@ mount -t devtmpfs devtmpfs /dev
 export PATH=/bin:/sbin:/tests PATH_MOD=/lib/hal/modules/$(uname -r)
 # Users as docs/kernel-security.md describes them (accounts made by run-kernel-tests.sh):
 # group 'hal' (gid 990) with user 'haluser' (uid 1000) in it, 'nobody' (65534) outside
-# it; the helper 4750 root:hal, and mdev applies what firmware/udev/60-hal.rules
-# says for udev (/dev/rtapi 0660 root:hal).
+# it; the helper 4750 root:hal, and /dev/rtapi 0660 root:hal as
+# firmware/udev/60-hal.rules says for udev.
 mkdir -p /home/haluser
-# (Debian's kernels have no uevent helper: mdev listens on netlink, as udevd would.)
-echo 'rtapi 0:990 660' >/etc/mdev.conf
-mdev -d
+# (No udevd here, and Debian's kernels have no uevent helper: this loop applies the
+# rule whenever rtapi.ko creates the node; halcmd waits up to 2 s for the group.)
+(while :; do
+	[ -c /dev/rtapi ] && [ "$(stat -c %g:%a /dev/rtapi)" != 990:660 ] &&
+		chown 0:990 /dev/rtapi && chmod 660 /dev/rtapi
+	sleep 0.1
+done) &
 chown 0:990 /bin/emc_module_helper && chmod 4750 /bin/emc_module_helper
 chmod 1777 /tmp
 chown -R 1000:1000 /home/haluser /tests/hal
