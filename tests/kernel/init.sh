@@ -35,7 +35,9 @@ for t in /tests/cases/*.sh; do
 		res=FAIL; fail=$((fail + 1))
 	fi
 	echo "KTEST $name $res ($(($(cut -d. -f1 /proc/uptime) - t0)) s)"
-	# leave a clean kernel for the next case whatever this one did
+	# leave a clean kernel for the next case whatever this one did (functions still on
+	# a thread hold their modules: halrun -U takes them off first)
+	[ -e /proc/rtapi ] && HAL_FLAVOR=kernel halrun -U >/dev/null 2>&1
 	for m in $(lsmod | awk 'NR > 1 && $1 != "rtapi" && $1 != "hal_lib" { print $1 }'); do rmmod "$m"; done
 	rmmod hal_lib 2>/dev/null; rmmod rtapi 2>/dev/null
 done
