@@ -13,11 +13,11 @@ asu 'halcmd loadrt threads name1=t period1=1000000 && halcmd loadrt siggen && ha
 check 'test "$(stat -c %a:%g /dev/rtapi)" = 660:990'
 check '! setpriv --reuid=65534 --regid=65534 --clear-groups sh -c "exec 3</dev/rtapi" 2>/dev/null'
 check '! setpriv --reuid=65534 --regid=65534 --clear-groups /bin/emc_module_helper remove siggen 2>/dev/null'
-out=$(setpriv --reuid=65534 --regid=65534 --clear-groups env HAL_FLAVOR=kernel halcmd show comp 2>&1); rc=$?
+rc=0; out=$(setpriv --reuid=65534 --regid=65534 --clear-groups env HAL_FLAVOR=kernel halcmd show comp 2>&1) || rc=$?
 echo "  as uid 65534: halcmd show comp: exit $rc: $out"
 check '[ $rc != 0 ]'
 
-out=$(asu 'hal_exploit 0x48534d00'); rc=$?
+rc=0; out=$(asu 'hal_exploit 0x48534d00') || rc=$?
 echo "$out" | sed 's/^/  /'
 check '[ $rc = 0 ]'
 check '! echo "$out" | grep -q EXPLOITED'
