@@ -35,6 +35,7 @@ static int sampler_export(struct fifo_module *fm, void *mem, int n)
 	s->hdr = fm->shm[n].hdr;
 	s->data = fm->shm[n].data;
 	s->num_pins = hal_fifo_cfg_pins(cfg[n]);
+	hal_fifo_rt_init(&s->fifo, (rtapi_u32)depth[n], (rtapi_u32)s->num_pins);
 	for (m = 0; m < s->num_pins; m++)
 		s->type[m] = hal_fifo_type_of(cfg[n][m]);
 	err = fifo_pins_export(s->pins, fm->comp_id, "sampler", n, cfg[n], HAL_IN);

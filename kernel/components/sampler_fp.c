@@ -19,7 +19,7 @@ COMP_FP_LOCAL void sample(void *arg, long period_ns)
 	int m;
 
 	if (*s->enable) {
-		rec = hal_fifo_write_slot(s->hdr, s->data);
+		rec = hal_fifo_rt_write_slot(s->hdr, &s->fifo, s->data);
 		if (!rec) {
 			*s->overruns = next_s32(*s->overruns);
 			s->gap = true;
@@ -46,12 +46,12 @@ COMP_FP_LOCAL void sample(void *arg, long period_ns)
 					break;
 				}
 			}
-			hal_fifo_write_done(s->hdr);
+			hal_fifo_rt_write_done(s->hdr, &s->fifo);
 			s->gap = false;
 		}
 		*s->sample_num = next_s32(*s->sample_num);
 	}
-	used = hal_fifo_used(s->hdr);
+	used = hal_fifo_rt_used(s->hdr, &s->fifo, 1);
 	*s->curr_depth = (hal_s32_t)used;
-	*s->full = used >= s->hdr->depth;
+	*s->full = used >= s->fifo.slots - 1;
 }

@@ -13,6 +13,7 @@
 
 struct sampler {		/* in hal_malloc() memory, one per FIFO */
 	struct hal_fifo_hdr *hdr;	/* shared memory: sample() is the producer */
+	struct hal_fifo_rt fifo;	/* sample()'s own geometry and 'in': never from hdr */
 	union hal_fifo_value *data;
 	hal_bit_t *enable;		/* read by sample() */
 	hal_s32_t *curr_depth;		/* written by sample() */

@@ -222,6 +222,71 @@ static inline void hal_fifo_read_done(struct hal_fifo_hdr *h)
 	__atomic_store_n(&h->out, hal_fifo_next(h->out, h->slots), __ATOMIC_RELEASE);
 }
 
+/* The realtime side (sampler, streamer) keeps its own copy of the geometry and of its
+ * own index, in its hal_malloc() memory, which users cannot write. The header is in
+ * shared memory that users may write (halsampler moves 'out'; docs/kernel-security.md),
+ * so realtime code takes no size, stride or own index from it, and checks the other
+ * side's index against its own copy before using it. */
+struct hal_fifo_rt {
+	rtapi_u32 slots;	/* depth + 1 */
+	rtapi_u32 rec_words;	/* values per record, header words included */
+	rtapi_u32 pos;		/* the producer's 'in' or the consumer's 'out' */
+};
+
+static inline void hal_fifo_rt_init(struct hal_fifo_rt *r, rtapi_u32 depth, rtapi_u32 num_pins)
+{
+	r->slots = depth + 1;
+	r->rec_words = hal_fifo_rec_words(num_pins);
+	r->pos = 0;
+}
+
+/* Records in the FIFO as the realtime side sees them (0 if the other index is bad). */
+static inline rtapi_u32 hal_fifo_rt_used(const struct hal_fifo_hdr *h, const struct hal_fifo_rt *r,
+					 int producer)
+{
+	rtapi_u32 other = __atomic_load_n(producer ? &h->out : &h->in, __ATOMIC_ACQUIRE);
+
+	if (other >= r->slots)
+		return 0;
+	return producer ? hal_fifo_count(r->pos, other, r->slots) : hal_fifo_count(other, r->pos, r->slots);
+}
+
+/* Producer: the record to fill next, or NULL when the FIFO is full (or 'out' is bad). */
+static inline union hal_fifo_value *hal_fifo_rt_write_slot(const struct hal_fifo_hdr *h,
+							   const struct hal_fifo_rt *r,
+							   union hal_fifo_value *data)
+{
+	rtapi_u32 out = __atomic_load_n(&h->out, __ATOMIC_ACQUIRE);
+
+	if (out >= r->slots || hal_fifo_next(r->pos, r->slots) == out)
+		return NULL;
+	return data + (unsigned long)r->pos * r->rec_words;
+}
+
+static inline void hal_fifo_rt_write_done(struct hal_fifo_hdr *h, struct hal_fifo_rt *r)
+{
+	r->pos = hal_fifo_next(r->pos, r->slots);
+	__atomic_store_n(&h->in, r->pos, __ATOMIC_RELEASE);
+}
+
+/* Consumer: the oldest record, or NULL when the FIFO is empty (or 'in' is bad). */
+static inline const union hal_fifo_value *hal_fifo_rt_read_slot(const struct hal_fifo_hdr *h,
+								const struct hal_fifo_rt *r,
+								union hal_fifo_value *data)
+{
+	rtapi_u32 in = __atomic_load_n(&h->in, __ATOMIC_ACQUIRE);
+
+	if (in >= r->slots || in == r->pos)
+		return NULL;
+	return data + (unsigned long)r->pos * r->rec_words;
+}
+
+static inline void hal_fifo_rt_read_done(struct hal_fifo_hdr *h, struct hal_fifo_rt *r)
+{
+	r->pos = hal_fifo_next(r->pos, r->slots);
+	__atomic_store_n(&h->out, r->pos, __ATOMIC_RELEASE);
+}
+
 #ifdef __cplusplus
 }
 #endif

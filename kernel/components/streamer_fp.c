@@ -28,7 +28,7 @@ COMP_FP_LOCAL void update(void *arg, long period_ns)
 	int m;
 
 	if (clocked(s) && *s->enable) {
-		rec = hal_fifo_read_slot(s->hdr, s->data);
+		rec = hal_fifo_rt_read_slot(s->hdr, &s->fifo, s->data);
 		if (!rec) {
 			*s->underruns = (hal_s32_t)((rtapi_u32)*s->underruns + 1u);
 		} else {
@@ -52,10 +52,10 @@ COMP_FP_LOCAL void update(void *arg, long period_ns)
 					break;
 				}
 			}
-			hal_fifo_read_done(s->hdr);
+			hal_fifo_rt_read_done(s->hdr, &s->fifo);
 		}
 	}
-	used = hal_fifo_used(s->hdr);
+	used = hal_fifo_rt_used(s->hdr, &s->fifo, 0);
 	*s->curr_depth = (hal_s32_t)used;
 	*s->empty = used == 0;
 }

@@ -18,6 +18,7 @@
 
 struct streamer {		/* in hal_malloc() memory, one per FIFO */
 	struct hal_fifo_hdr *hdr;	/* shared memory: update() is the consumer */
+	struct hal_fifo_rt fifo;	/* update()'s own geometry and 'out': never from hdr */
 	union hal_fifo_value *data;
 	hal_s32_t *curr_depth;		/* written by update() */
 	hal_bit_t *empty;		/* written by update() */

@@ -124,6 +124,10 @@ static int alias_set(enum hal_kind kind, const char *name, const char *alias)
 		rtapi_print_msg(RTAPI_MSG_ERR, "alias: HAL is not initialised or no name given\n");
 		return -EINVAL;
 	}
+#ifdef ULAPI
+	/* a userspace program changes the records only through a checked request */
+	return hal_ul_names(HAL_REQ_ALIAS, name, alias ? alias : "", kind == HAL_KIND_PARAM);
+#endif
 	hal_lock();
 	rc = hal_alias_set_locked(kind, name, alias);
 	hal_unlock();
@@ -138,6 +142,29 @@ int hal_pin_alias(const char *pin_name, const char *alias)
 int hal_param_alias(const char *param_name, const char *alias)
 {
 	return alias_set(HAL_KIND_PARAM, param_name, alias);
+}
+
+/* caller holds the HAL lock (hal_request.c: halcmd unalias) */
+int hal_unalias_locked(enum hal_kind kind, const char *name)
+{
+	struct hal_alias_rec *a;
+	struct hal_obj_hdr *target;
+	int rc = hal_check_lock(HAL_LOCK_CONFIG, "change aliases");
+
+	if (rc)
+		return rc;
+	a = alias_named(kind, name);
+	if (a) {
+		alias_unlink(a);
+		return 0;
+	}
+	target = hal_find(kind, name);
+	if (!target) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "unalias: no %s or alias named '%s'\n", hal_kind_name(kind), name);
+		return -ENOENT;
+	}
+	hal_alias_remove_all(target);
+	return 0;
 }
 
 #ifdef ULAPI
@@ -161,33 +188,11 @@ static struct hal_alias_rec *alias_named(enum hal_kind kind, const char *name)
 
 static int unalias(enum hal_kind kind, const char *name)
 {
-	struct hal_alias_rec *a;
-	struct hal_obj_hdr *target;
-	int rc = 0;
-
 	if (!hal_seg) {
 		rtapi_print_msg(RTAPI_MSG_ERR, "unalias: HAL is not attached\n");
 		return -EINVAL;
 	}
-	hal_lock();
-	rc = hal_check_lock(HAL_LOCK_CONFIG, "change aliases");
-	if (rc)
-		goto out;
-	a = alias_named(kind, name);
-	if (a) {
-		alias_unlink(a);
-		goto out;
-	}
-	target = hal_find(kind, name);
-	if (!target) {
-		rtapi_print_msg(RTAPI_MSG_ERR, "unalias: no %s or alias named '%s'\n", hal_kind_name(kind), name);
-		rc = -ENOENT;
-		goto out;
-	}
-	hal_alias_remove_all(target);
-out:
-	hal_unlock();
-	return rc;
+	return hal_ul_names(HAL_REQ_UNALIAS, name, 0, kind == HAL_KIND_PARAM);
 }
 
 int hal_unalias_pin(const char *name)

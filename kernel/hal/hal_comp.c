@@ -6,13 +6,23 @@
 #include "hal_query.h"
 #include "rtapi_string.h"
 
-rtapi_u32 hal_current_comp_off;
+/* The module being loaded or unloaded (hal_host.h), set by the module host around
+ * rtapi_app_main() and rtapi_app_exit(). Module inits and exits are serialised by
+ * load_mutex (two insmods at once in the kernel flavor), so there is one context and
+ * every hal_init() and hal_malloc() in it belongs to that module. Guarded by load_mutex. */
+static unsigned long load_mutex;
+static struct {
+	char module[HAL_NAME_LEN + 1];
+	const char *args;
+	rtapi_u32 comp_off;	/* what hal_malloc() charges: the module's last hal_init() */
+	rtapi_u64 owner;	/* kernel flavor: its struct module */
+} load;
 
-/* Set by the module host around rtapi_app_main(); recorded by hal_init(). */
-static char load_module[HAL_NAME_LEN + 1];
-static const char *load_args;
+/* Outside any load context (unit tests, userspace components): the last component
+ * hal_init()ed in this address space. Guarded by the HAL mutex. */
+static rtapi_u32 last_comp_off;
 
-static int comp_ids_issued;	/* for names of anonymous components */
+static int comp_ids_issued;	/* for names of anonymous components: atomic */
 
 struct hal_comp_rec *hal_comp_by_id(int comp_id)
 {
@@ -51,11 +61,29 @@ const char *hal_dir_name(int dir)
 
 void hal_set_load_context(const char *module, const char *args)
 {
-	if (module)
-		rtapi_snprintf(load_module, sizeof(load_module), "%s", module);
-	else
-		load_module[0] = 0;
-	load_args = args;
+	if (module) {
+		rtapi_mutex_get(&load_mutex);	/* held until the module's init/exit is over */
+		rtapi_snprintf(load.module, sizeof(load.module), "%s", module);
+		load.args = args;
+		load.comp_off = 0;
+		load.owner = 0;
+		return;
+	}
+	load.module[0] = 0;
+	load.args = 0;
+	load.comp_off = 0;
+	load.owner = 0;
+	rtapi_mutex_give(&load_mutex);
+}
+
+void hal_set_load_module(void *owner)
+{
+	load.owner = (rtapi_u64)(unsigned long)owner;
+}
+
+rtapi_u64 hal_load_module(void)
+{
+	return load.module[0] ? load.owner : 0;
 }
 
 static void record_load_context(struct hal_comp_rec *comp)
@@ -63,23 +91,24 @@ static void record_load_context(struct hal_comp_rec *comp)
 	rtapi_u32 len;
 	char *s;
 
-	if (!load_module[0])
+	if (!load.module[0])
 		return;
-	strcpy(comp->module, load_module);
-	if (!load_args || !*load_args)
+	strcpy(comp->module, load.module);
+	load.comp_off = hal_off(comp);
+	if (!load.args || !*load.args)
 		return;
-	len = strlen(load_args);
+	len = strlen(load.args);
 	if (len > HAL_ARGS_LEN)
 		len = HAL_ARGS_LEN;
 	s = hal_alloc_block(hal_seg, len + 1, HAL_KIND_STRING, hal_off(comp));
 	if (!s)
 		return;		/* only "save comp" loses the arguments */
-	memcpy(s, load_args, len);
+	memcpy(s, load.args, len);
 	s[len] = 0;
 	comp->args_off = hal_off(s);
 }
 
-static int comp_new_locked(const char *name)
+int hal_comp_new_locked(const char *name, bool is_realtime, int pid, rtapi_u64 mem_base)
 {
 	struct hal_comp_rec *comp;
 	int err;
@@ -91,19 +120,14 @@ static int comp_new_locked(const char *name)
 	if (!comp)
 		return err;
 	comp->comp_id = hal_seg->next_comp_id++;
-#ifdef RTAPI
-	comp->is_realtime = 1;
-	comp->pid = 0;
-#else
-	comp->is_realtime = 0;
-	comp->pid = (rtapi_s32)rtapi_getpid();
-#endif
-	comp->mem_base = (rtapi_u64)(unsigned long)hal_shmem_base;
-#ifdef RTAPI
-	hal_seg->rt_mem_base = comp->mem_base;
-#endif
-	record_load_context(comp);
-	hal_current_comp_off = hal_off(comp);
+	comp->is_realtime = is_realtime;
+	comp->pid = is_realtime ? 0 : pid;
+	comp->mem_base = mem_base;
+	if (is_realtime) {
+		hal_seg->rt_mem_base = comp->mem_base;
+		record_load_context(comp);
+		last_comp_off = hal_off(comp);
+	}
 	return comp->comp_id;
 }
 
@@ -116,21 +140,26 @@ int hal_init(const char *name)
 	if (rc < 0)
 		return rc;
 	if (!name) {
-		rtapi_snprintf(auto_name, sizeof(auto_name), "comp%d", ++comp_ids_issued);
+		rtapi_snprintf(auto_name, sizeof(auto_name), "comp%d",
+			       __atomic_add_fetch(&comp_ids_issued, 1, __ATOMIC_RELAXED));
 		name = auto_name;
 	}
+#ifdef ULAPI
+	rc = hal_ul_comp_new(name);
+#else
 	hal_lock();
-	rc = comp_new_locked(name);
+	rc = hal_comp_new_locked(name, true, 0, (rtapi_u64)(unsigned long)hal_shmem_base);
 	hal_unlock();
+#endif
 	if (rc > 0)
-		hal_local_users++;
-	else if (hal_local_users == 0)
+		hal_local_user_new();
+	else if (__atomic_load_n(&hal_local_users, __ATOMIC_ACQUIRE) == 0)
 		hal_segment_unmap();
 	return rc;
 }
 
 /* Remove a component and everything it owns. Caller holds the HAL lock. */
-static void comp_delete_locked(struct hal_comp_rec *comp)
+void hal_comp_delete_locked(struct hal_comp_rec *comp)
 {
 	rtapi_u32 comp_off = hal_off(comp);
 	struct hal_obj_hdr *o, *next;
@@ -153,8 +182,10 @@ static void comp_delete_locked(struct hal_comp_rec *comp)
 		if (o->owner_off == comp_off)
 			hal_param_delete_locked((struct hal_param_rec *)o);
 	}
-	if (hal_current_comp_off == comp_off)
-		hal_current_comp_off = 0;
+	if (last_comp_off == comp_off)
+		last_comp_off = 0;
+	if (load.comp_off == comp_off)
+		load.comp_off = 0;
 	hal_index_remove(hal_seg, &comp->hdr);
 	blk = (struct hal_block_hdr *)comp - 1;
 	blk->owner_off = comp_off;	/* so the sweep below frees the record too */
@@ -172,10 +203,15 @@ static bool comp_is_local(const struct hal_comp_rec *comp)
 #endif
 }
 
+void hal_local_user_new(void)
+{
+	__atomic_add_fetch(&hal_local_users, 1, __ATOMIC_ACQ_REL);
+}
+
 void hal_local_user_gone(void)
 {
-	if (--hal_local_users <= 0) {
-		hal_local_users = 0;
+	if (__atomic_sub_fetch(&hal_local_users, 1, __ATOMIC_ACQ_REL) <= 0) {
+		__atomic_store_n(&hal_local_users, 0, __ATOMIC_RELEASE);
 		hal_segment_unmap();
 	}
 }
@@ -189,6 +225,9 @@ int hal_exit(int comp_id)
 		rtapi_print_msg(RTAPI_MSG_ERR, "hal_exit(%d): HAL is not initialised\n", comp_id);
 		return -EINVAL;
 	}
+#ifdef ULAPI
+	return hal_ul_comp_exit(comp_id);
+#endif
 	hal_lock();
 	comp = hal_comp_by_id(comp_id);
 	if (!comp) {
@@ -205,7 +244,7 @@ int hal_exit(int comp_id)
 	}
 #endif
 	local = comp_is_local(comp);
-	comp_delete_locked(comp);
+	hal_comp_delete_locked(comp);
 	hal_unlock();
 	if (local)
 		hal_local_user_gone();
@@ -213,46 +252,25 @@ int hal_exit(int comp_id)
 }
 
 #ifdef ULAPI
-/* Caller holds the HAL lock. 0 removed, -ENOENT, -EPERM (realtime), -EBUSY (alive). */
-static int comp_remove_dead_locked(struct hal_comp_rec *comp)
-{
-	if (comp->is_realtime)
-		return -EPERM;
-	if (comp->pid == (rtapi_s32)rtapi_getpid() || rtapi_process_exists(comp->pid))
-		return -EBUSY;
-	comp_delete_locked(comp);
-	return 0;
-}
-
+/* Crash clean-up (hal_query.h): checked and carried out by hal_request.c, in the
+ * kernel flavor inside hal_lib.ko. */
 int hal_comp_remove_dead(int comp_id)
 {
-	struct hal_comp_rec *comp;
-	int rc;
-
 	if (!hal_seg)
 		return -EINVAL;
-	hal_lock();
-	comp = hal_comp_by_id(comp_id);
-	rc = comp ? comp_remove_dead_locked(comp) : -ENOENT;
-	hal_unlock();
-	return rc;
+	if (comp_id <= 0)
+		return -ENOENT;
+	return hal_ul_comp_id_req(HAL_REQ_COMP_REMOVE_DEAD, comp_id);
 }
 
 int hal_comps_remove_dead(void)
 {
-	struct hal_obj_hdr *o, *next;
-	int removed = 0;
+	int rc;
 
 	if (!hal_seg)
 		return 0;
-	hal_lock();
-	for (o = hal_first(HAL_KIND_COMP); o; o = next) {
-		next = hal_next(o);
-		if (comp_remove_dead_locked((struct hal_comp_rec *)o) == 0)
-			removed++;
-	}
-	hal_unlock();
-	return removed;
+	rc = hal_ul_comp_id_req(HAL_REQ_COMP_REMOVE_DEAD, 0);
+	return rc < 0 ? 0 : rc;
 }
 #endif
 
@@ -269,7 +287,7 @@ int hal_exit_module_comps(const char *module)
 
 		next = hal_next(o);
 		if (comp->is_realtime && strcmp(comp->module, module) == 0) {
-			comp_delete_locked(comp);
+			hal_comp_delete_locked(comp);
 			removed++;
 		}
 	}
@@ -305,6 +323,9 @@ int hal_ready(int comp_id)
 		rtapi_print_msg(RTAPI_MSG_ERR, "hal_ready(%d): HAL is not initialised\n", comp_id);
 		return -EINVAL;
 	}
+#ifdef ULAPI
+	return hal_ul_comp_id_req(HAL_REQ_COMP_READY, comp_id);
+#endif
 	hal_lock();
 	comp = hal_comp_by_id(comp_id);
 	if (comp)
@@ -325,8 +346,12 @@ int hal_set_constructor(int comp_id, hal_constructor_t constructor)
 		return -EINVAL;
 	hal_lock();
 	comp = hal_comp_by_id(comp_id);
+#ifdef ULAPI
+	(void)constructor;	/* only the realtime host calls constructors: nothing to keep */
+#else
 	if (comp)
 		comp->constructor = (rtapi_u64)(unsigned long)constructor;
+#endif
 	hal_unlock();
 	if (!comp) {
 		rtapi_print_msg(RTAPI_MSG_ERR, "hal_set_constructor: component id %d does not exist\n",
@@ -348,9 +373,14 @@ void *hal_malloc(long int size)
 		rtapi_print_msg(RTAPI_MSG_ERR, "hal_malloc: bad size %ld\n", size);
 		return 0;
 	}
+#ifdef ULAPI
+	p = hal_ul_malloc(size);
+#else
 	hal_lock();
-	p = hal_alloc_block(hal_seg, (rtapi_u32)size, HAL_KIND_MALLOC, hal_current_comp_off);
+	p = hal_alloc_block(hal_seg, (rtapi_u32)size, HAL_KIND_MALLOC,
+			    load.module[0] ? load.comp_off : last_comp_off);
 	hal_unlock();
+#endif
 	if (!p)
 		rtapi_print_msg(RTAPI_MSG_ERR, "hal_malloc: HAL shared memory is full (%ld bytes wanted)\n",
 				size);

@@ -58,6 +58,7 @@ static int export_locked(const char *name, hal_funct_t funct, void *arg, int use
 		return err;
 	f->funct = (rtapi_u64)(unsigned long)funct;
 	f->arg = (rtapi_u64)(unsigned long)arg;
+	f->module = hal_load_module();
 	f->uses_fp = uses_fp != 0;
 	f->reentrant = reentrant != 0;
 	err = hal_timing_objects_new(name, &f->time_ptr, &f->tmax, comp);
@@ -94,6 +95,8 @@ int hal_export_funct(const char *name, hal_funct_t funct, void *arg, int uses_fp
 void hal_funct_delete_locked(struct hal_funct_rec *f)
 {
 	hal_funct_remove_from_threads(f);
+	if (f->puts_pending)
+		hal_threads_quiesce();
 	hal_timing_objects_delete(f->hdr.name);
 	hal_object_delete(&f->hdr);
 }
@@ -115,6 +118,7 @@ static void remove_entries(struct hal_thread_rec *t, struct hal_funct_rec *f, rt
 			__atomic_store_n(link, e->next_off, __ATOMIC_RELEASE);
 			hal_free_block(hal_seg, e);
 			ef->users--;
+			ef->puts_pending++;	/* hal_threads_quiesce() drops its module reference */
 		} else {
 			t->entry_count++;
 			t->last_entry_off = *link;
@@ -139,7 +143,7 @@ void hal_comp_functs_remove_from_threads(rtapi_u32 comp_off)
 		remove_entries((struct hal_thread_rec *)o, 0, comp_off);
 }
 
-static int add_locked(const char *funct_name, const char *thread_name, int position)
+int hal_add_funct_locked(const char *funct_name, const char *thread_name, int position)
 {
 	struct hal_funct_rec *f;
 	struct hal_thread_rec *t;
@@ -180,8 +184,16 @@ static int add_locked(const char *funct_name, const char *thread_name, int posit
 				position, thread_name, n);
 		return -EINVAL;
 	}
+	/* While on a thread, the function's module cannot be unloaded (kernel flavor). */
+	err = hal_os_code_get(f->module);
+	if (err) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "function '%s': its module is being unloaded\n",
+				funct_name);
+		return err;
+	}
 	e = hal_alloc_block(hal_seg, sizeof(*e), HAL_KIND_ENTRY, 0);
 	if (!e) {
+		hal_os_code_put(f->module);
 		rtapi_print_msg(RTAPI_MSG_ERR, "HAL shared memory is full: cannot add '%s' to '%s'\n",
 				funct_name, thread_name);
 		return -ENOMEM;
@@ -208,13 +220,16 @@ int hal_add_funct_to_thread(const char *funct_name, const char *thread_name, int
 
 	if (!hal_seg)
 		return -EINVAL;
+#ifdef ULAPI
+	return hal_ul_names(HAL_REQ_ADDF, funct_name, thread_name, position);
+#endif
 	hal_lock();
-	rc = add_locked(funct_name, thread_name, position);
+	rc = hal_add_funct_locked(funct_name, thread_name, position);
 	hal_unlock();
 	return rc;
 }
 
-static int del_locked(const char *funct_name, const char *thread_name)
+int hal_del_funct_locked(const char *funct_name, const char *thread_name)
 {
 	struct hal_funct_rec *f;
 	struct hal_thread_rec *t;
@@ -242,9 +257,10 @@ static int del_locked(const char *funct_name, const char *thread_name)
 			if (t->last_entry_off == hal_off(e))
 				t->last_entry_off = prev;
 			t->entry_count--;
-			hal_threads_quiesce();
-			hal_free_block(hal_seg, e);
 			f->users--;
+			f->puts_pending++;
+			hal_threads_quiesce();	/* then its module may go */
+			hal_free_block(hal_seg, e);
 			return 0;
 		}
 		prev = *link;
@@ -259,8 +275,11 @@ int hal_del_funct_from_thread(const char *funct_name, const char *thread_name)
 
 	if (!hal_seg)
 		return -EINVAL;
+#ifdef ULAPI
+	return hal_ul_names(HAL_REQ_DELF, funct_name, thread_name, 0);
+#endif
 	hal_lock();
-	rc = del_locked(funct_name, thread_name);
+	rc = hal_del_funct_locked(funct_name, thread_name);
 	hal_unlock();
 	return rc;
 }

@@ -15,6 +15,9 @@ extern "C" {
  * 'module' loaded with 'args' (shown by "show comp", written by "save comp").
  * Pass NULL, NULL after rtapi_app_main() returns. Init code only. */
 void hal_set_load_context(const char *module, const char *args);
+/* Kernel flavor, right after hal_set_load_context(): the module's struct module, which
+ * functions it exports hold a reference on while on a thread. */
+void hal_set_load_module(void *owner);
 
 /* Remove every component created by 'module' (after rtapi_app_exit(), or when
  * rtapi_app_main() failed and left some behind). Returns how many were removed. */

@@ -31,12 +31,25 @@ static inline bool hal_in_segment(const volatile void *p, unsigned long len)
 int hal_segment_map(void);		/* map (and first time initialise) the segment */
 void hal_segment_unmap(void);		/* when the last local user is gone */
 void hal_segment_init(struct hal_seg_hdr *seg, rtapi_u32 size);	/* lays out an empty segment */
-extern int hal_local_users;		/* components + threads of this address space + attach */
+extern int hal_local_users;		/* components + threads of this address space + attach: atomic */
+void hal_local_user_new(void);
 void hal_local_user_gone(void);		/* unmaps the segment after the last one */
 
 /* --- locking (hal_lock.c) --- */
-void hal_lock(void);
+void hal_lock(void);		/* waits; recovers the mutex from a dead holder */
 void hal_unlock(void);
+void hal_lock_seg(struct hal_seg_hdr *seg);
+void hal_lock_give(struct hal_seg_hdr *seg);
+/* One attempt by 'self' (pid, process name): 0 taken (*dead_pid: the dead holder it was
+ * recovered from, or 0), -EBUSY held by a live holder. */
+int hal_lock_try(struct hal_seg_hdr *seg, int self, const char *name, int *dead_pid);
+/* Tests inject liveness; NULL restores hal_os_pid_alive. */
+void hal_lock_set_liveness_check(bool (*alive)(int pid));
+int hal_set_lock_locked(unsigned lock_type);
+
+/* --- the operating system, per flavor (hal_os_uspace.c, hal_lib_kmod.c) --- */
+int hal_os_self(char *name, int len);	/* this process's pid (tgid); its name into name */
+bool hal_os_pid_alive(int pid);
 /* 0, or -EPERM with a message naming 'what' when 'level' is locked. */
 int hal_check_lock(unsigned level, const char *what);
 
@@ -46,6 +59,10 @@ void hal_free_block(struct hal_seg_hdr *seg, void *data);
 /* Free every block owned by 'owner_off', then merge free neighbours. */
 void hal_free_owned(struct hal_seg_hdr *seg, rtapi_u32 owner_off);
 void hal_heap_compact(struct hal_seg_hdr *seg);
+/* Is [off, off+len) inside hal_malloc() memory of the userspace component at owner_off?
+ * Checks offsets that come from users (kernel flavor requests) before the core
+ * writes through them. */
+bool hal_umalloc_owned(const struct hal_seg_hdr *seg, rtapi_u32 owner_off, rtapi_u32 off, rtapi_u32 len);
 
 /* --- name index and kind lists (hal_index.c) --- */
 rtapi_u32 hal_name_hash(enum hal_kind kind, const char *name);
@@ -63,6 +80,10 @@ struct hal_obj_hdr *hal_alias_target(struct hal_seg_hdr *seg, const struct hal_o
 void hal_alias_remove_all(struct hal_obj_hdr *target);
 /* Add (alias non-empty) or remove (NULL/"": all of them) aliases of a pin or param. */
 int hal_alias_set_locked(enum hal_kind kind, const char *name, const char *alias);
+/* halcmd unalias: 'name' is an alias (removed) or a pin/param (all its aliases removed). */
+int hal_unalias_locked(enum hal_kind kind, const char *name);
+/* halcmd setexact_for_test_suite_only (hal_thread.c): -EBUSY once a thread exists. */
+int hal_set_exact_periods_locked(void);
 /* Allocate a named record of 'size' bytes, check the name, index it. Logs and returns NULL
  * with *err set on failure (-EINVAL bad/long name, -EEXIST duplicate, -ENOMEM). */
 void *hal_object_new(enum hal_kind kind, rtapi_u32 size, const char *name, rtapi_u32 owner_off, int *err);
@@ -86,9 +107,10 @@ int hal_format_name(char *buf, const char *what, const char *fmt, va_list ap);
 
 /* --- components (hal_comp.c) --- */
 struct hal_comp_rec *hal_comp_by_id(int comp_id);
-/* The component that owns objects created now without a comp_id (hal_malloc,
- * hal_create_thread): the last one hal_init()ed in this address space. */
-extern rtapi_u32 hal_current_comp_off;
+/* A component record: realtime (owned by the realtime host, mem_base its mapping) or
+ * a userspace process's (pid; mem_base where that process maps the segment). */
+int hal_comp_new_locked(const char *name, bool is_realtime, int pid, rtapi_u64 mem_base);
+void hal_comp_delete_locked(struct hal_comp_rec *comp);
 const char *hal_type_name(int type);
 const char *hal_dir_name(int dir);
 
@@ -104,8 +126,30 @@ int hal_param_new_locked(const char *name, hal_type_t type, hal_param_dir_t dir,
 void hal_param_delete_locked(struct hal_param_rec *param);
 /* Value storage of a pin as this process sees it: the signal's value or the dummy. */
 union hal_data *hal_pin_value(struct hal_pin_rec *pin);
+static inline union hal_data *hal_pin_dummy(const struct hal_pin_rec *pin)
+{
+	return hal_ptr(pin->dummy_off);
+}
+static inline union hal_data *hal_sig_value(const struct hal_sig_rec *sig)
+{
+	return hal_ptr(sig->value_off);
+}
+
+int hal_signal_new_locked(const char *name, hal_type_t type);
+int hal_signal_delete_locked(const char *name);
+int hal_link_locked(const char *pin_name, const char *sig_name);
+int hal_unlink_locked(const char *pin_name);
 
 /* --- functions and threads (hal_funct.c, hal_thread.c) --- */
+int hal_add_funct_locked(const char *funct_name, const char *thread_name, int position);
+int hal_del_funct_locked(const char *funct_name, const char *thread_name);
+int hal_set_running_locked(int running);
+/* Hold / drop a reference on a function's module (hal_funct_rec.module) while the
+ * function is on a thread (kernel flavor: try_module_get; hal_lib_kmod.c). 0 or -errno. */
+int hal_os_code_get(rtapi_u64 module);
+void hal_os_code_put(rtapi_u64 module);
+/* The module being loaded now (hal_set_load_module), 0 outside a load context. */
+rtapi_u64 hal_load_module(void);
 /* The <name>.time pin and <name>.tmax param every function and thread has. */
 int hal_timing_objects_new(const char *name, hal_s32_t **time_ptr, rtapi_s32 *tmax,
 			   struct hal_comp_rec *comp);
@@ -118,5 +162,35 @@ void hal_funct_remove_from_threads(struct hal_funct_rec *f);
 void hal_comp_functs_remove_from_threads(rtapi_u32 comp_off);
 /* Wait (bounded) until no thread is in the middle of running its functions. */
 void hal_threads_quiesce(void);
+
+/* --- configuration requests (hal_request.c, hal_request_ul.c) --- */
+#include "hal_request.h"
+struct hal_caller {
+	bool is_user;		/* a userspace process: every offset and owner is checked */
+	int pid;
+};
+/* Check and carry out one request; the caller holds the HAL mutex. Messages go where
+ * rtapi_print_msg sends them (the kernel flavor captures them into r->msg). */
+int hal_req_execute(struct hal_req *r, const struct hal_caller *c);
+#ifdef ULAPI
+/* Userspace: build a request, run it here or in the kernel (hal_request_ul.c). */
+int hal_ul_submit(struct hal_req *r);
+int hal_ul_names(enum hal_req_op op, const char *name, const char *name2, int arg);
+int hal_ul_comp_new(const char *name);
+int hal_ul_comp_exit(int comp_id);
+int hal_ul_comp_id_req(enum hal_req_op op, int comp_id);
+void *hal_ul_malloc(long size);
+int hal_ul_obj_new(enum hal_req_op op, const char *name, int type, int dir, volatile void *addr,
+		   int comp_id);
+int hal_ul_set(enum hal_req_op op, const char *name, int type, rtapi_u64 raw);
+int hal_ul_set_own_param(const char *name, hal_type_t type, void *value_addr);
+/* Kernel flavor (hal_ulapi_kmod.c): /dev/rtapi mapped here, or not. */
+extern bool hal_seg_is_kmod;
+int hal_kmod_map(char **base);
+void hal_kmod_unmap(void);
+int hal_kmod_request(struct hal_req *r);
+void hal_kmod_lock(bool take);
+int hal_kmod_recover(void);
+#endif
 
 #endif /* HAL_INTERNAL_H */

@@ -12,10 +12,13 @@
 
 #define HAL_KEY 0x48414c32		/* "HAL2": RTAPI shmem key of the segment */
 #define HAL_SEGMENT_SIZE (64u << 20)	/* sparse in userspace; holds ~100k pins */
-#define HAL_LAYOUT_VERSION 4
+#define HAL_LAYOUT_VERSION 5
 #define HAL_SEG_MAGIC 0x48414c21
 #define HAL_HASH_BUCKETS 65536u		/* power of two */
 #define HAL_ALIGN 8u
+/* Where the value area starts in a segment of 'size' bytes: its last quarter, page
+ * aligned, so that the kernel flavor maps it apart from the records (hal_layout.h). */
+#define HAL_VAL_START(size) (((size) - (size) / 4) & ~4095u)
 
 /* What a heap block holds. Kinds below HAL_KIND_COUNT are named, indexed objects. */
 enum hal_kind {
@@ -31,13 +34,34 @@ enum hal_kind {
 	HAL_KIND_ENTRY,				/* a function's place in a thread */
 	HAL_KIND_STRING,			/* module arguments */
 	HAL_KIND_ALIAS,				/* struct hal_alias_rec (hal_alias.c) */
+	/* The value area (below): the only memory a kernel-flavor user may write. */
+	HAL_KIND_VALUE,				/* a signal's value or a pin's dummy (8 bytes) */
+	HAL_KIND_UMALLOC,			/* hal_malloc() of a userspace component: its
+						 * record (struct hal_umalloc_rec) is in the
+						 * record heap, the memory in the value area */
 };
 
 /* hal_obj_hdr.flags: set on alias records, which sit in the name index under the
  * kind of their target (pin or param) but in no kind list. */
 #define HAL_OBJ_ALIAS 1u
 
-/* Precedes every block of the heap; blocks tile the heap from heap_start to heap_top. */
+/* Where a userspace component's hal_malloc() memory is (HAL_KIND_UMALLOC record). */
+struct hal_umalloc_rec {
+	rtapi_u32 off;		/* in the value area */
+	rtapi_u32 size;		/* bytes, a multiple of 8 */
+};
+
+/* The segment has two heaps (DESIGN.md "Who may touch what"; docs/kernel-security.md):
+ *  - the record heap [heap_start, val_start): the header, the name index, every object
+ *    record, thread entries, module arguments and realtime components' hal_malloc()
+ *    memory (their pin pointer slots and parameters). Only the HAL core writes it; in
+ *    the kernel flavor users map it read-only.
+ *  - the value area [val_start, size): signal values, pins' dummies and userspace
+ *    components' hal_malloc() memory (HAL_KIND_VALUE, HAL_KIND_UMALLOC). Nothing in it
+ *    is an address, offset or size that kernel code follows, not even allocator
+ *    metadata: its 8-byte granules are handed out by a bitmap in the record heap
+ *    (val_map_off); users may map it writable.
+ * Precedes every block of the record heap; blocks tile it from its start to its top. */
 struct hal_block_hdr {
 	rtapi_u32 size;		/* bytes including this header, multiple of HAL_ALIGN */
 	rtapi_u32 owner_off;	/* component record freed with, 0 = none */
@@ -93,7 +117,8 @@ struct hal_pin_rec {
 	rtapi_u8 type;		/* hal_type_t */
 	rtapi_u8 dir;		/* hal_pin_dir_t */
 	rtapi_u8 pad[6];
-	union hal_data dummy;	/* the value while unlinked */
+	rtapi_u32 dummy_off;	/* HAL_KIND_VALUE block: the value while unlinked */
+	rtapi_u32 pad2;
 };
 _Static_assert(sizeof(struct hal_pin_rec) == 112, "segment layout changed: bump HAL_LAYOUT_VERSION");
 
@@ -113,7 +138,8 @@ struct hal_sig_rec {
 	rtapi_u16 bidirs;	/* HAL_IO pins linked */
 	rtapi_u8 type;
 	rtapi_u8 pad;
-	union hal_data value;	/* linked pins point here */
+	rtapi_u32 value_off;	/* HAL_KIND_VALUE block: linked pins point here */
+	rtapi_u32 pad2;
 };
 _Static_assert(sizeof(struct hal_sig_rec) == 104, "segment layout changed: bump HAL_LAYOUT_VERSION");
 
@@ -126,9 +152,11 @@ struct hal_funct_rec {
 	rtapi_s32 users;	/* threads it is on */
 	rtapi_u8 uses_fp;
 	rtapi_u8 reentrant;
-	rtapi_u8 pad[6];
+	rtapi_u8 pad[2];
+	rtapi_u32 puts_pending;	/* entries removed whose module references hal_threads_quiesce() drops */
+	rtapi_u64 module;	/* kernel flavor: the struct module the code is in (hal_os_code_get) */
 };
-_Static_assert(sizeof(struct hal_funct_rec) == 128, "segment layout changed: bump HAL_LAYOUT_VERSION");
+_Static_assert(sizeof(struct hal_funct_rec) == 136, "segment layout changed: bump HAL_LAYOUT_VERSION");
 
 /* A second name of a pin or parameter (halcmd "alias", hal_pin_alias()). hdr.kind is
  * the target's kind, so hal_find() under the alias name answers the target itself;
@@ -174,6 +202,8 @@ struct hal_seg_hdr {
 	rtapi_u32 version;
 	rtapi_u32 size;
 	unsigned long mutex;	/* guards every configuration change; never taken by threads */
+	rtapi_s32 mutex_pid;	/* holder of 'mutex' (hal_lock.c), 0 = none or not yet known */
+	char mutex_holder[16];	/* its process name, for messages */
 	rtapi_u32 lock_level;	/* HAL_LOCK_* bits */
 	rtapi_u32 threads_running;
 	rtapi_s32 next_comp_id;
@@ -183,6 +213,12 @@ struct hal_seg_hdr {
 	rtapi_u32 heap_top;	/* first byte never allocated */
 	rtapi_u32 free_head;	/* free blocks, unordered */
 	rtapi_u32 bytes_used;
+	rtapi_u32 val_start;	/* the value area: page aligned, up to 'size' */
+	rtapi_u32 val_top;	/* first byte above every granule ever used */
+	rtapi_u32 val_map_off;	/* bitmap of used 8-byte granules (u64 words), in the records */
+	rtapi_u32 val_bytes_used;
+	rtapi_u32 val_hint;	/* granule where the next search starts */
+	rtapi_u32 pad_v;
 	rtapi_u32 list_head[HAL_KIND_COUNT];
 	rtapi_u32 list_tail[HAL_KIND_COUNT];
 	rtapi_u32 count[HAL_KIND_COUNT];

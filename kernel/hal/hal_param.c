@@ -54,6 +54,9 @@ int hal_param_new(const char *name, hal_type_t type, hal_param_dir_t dir, void *
 		rtapi_print_msg(RTAPI_MSG_ERR, "parameter '%s': call hal_init first\n", name);
 		return -EINVAL;
 	}
+#ifdef ULAPI
+	return hal_ul_obj_new(HAL_REQ_PARAM_NEW, name, type, dir, data_addr, comp_id);
+#endif
 	hal_lock();
 	comp = hal_comp_by_id(comp_id);
 	if (comp)
@@ -147,6 +150,9 @@ int hal_param_set(const char *name, hal_type_t type, void *value_addr)
 
 	if (!hal_seg)
 		return -EINVAL;
+#ifdef ULAPI
+	return hal_ul_set_own_param(name, type, value_addr);
+#endif
 	hal_lock();
 	param = hal_find(HAL_KIND_PARAM, name);
 	if (!param) {

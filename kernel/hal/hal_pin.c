@@ -23,13 +23,14 @@ union hal_data *hal_pin_value(struct hal_pin_rec *pin)
 {
 	struct hal_sig_rec *sig = hal_ptr(pin->signal_off);
 
-	return sig ? &sig->value : &pin->dummy;
+	return sig ? hal_sig_value(sig) : hal_pin_dummy(pin);
 }
 
 int hal_pin_new_locked(const char *name, hal_type_t type, hal_pin_dir_t dir, void **data_ptr_addr,
 		       struct hal_comp_rec *comp)
 {
 	struct hal_pin_rec *pin;
+	union hal_data *dummy;
 	int err;
 
 	if (!type_valid(type)) {
@@ -52,10 +53,17 @@ int hal_pin_new_locked(const char *name, hal_type_t type, hal_pin_dir_t dir, voi
 	pin = hal_object_new(HAL_KIND_PIN, sizeof(*pin), name, comp ? hal_off(comp) : 0, &err);
 	if (!pin)
 		return err;
+	dummy = hal_alloc_block(hal_seg, sizeof(*dummy), HAL_KIND_VALUE, comp ? hal_off(comp) : 0);
+	if (!dummy) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "HAL value memory is full: cannot create pin '%s'\n", name);
+		hal_object_delete(&pin->hdr);
+		return -ENOMEM;
+	}
+	pin->dummy_off = hal_off(dummy);
 	pin->type = type;
 	pin->dir = dir;
 	pin->data_ptr_off = hal_off(data_ptr_addr);
-	hal_pin_aim(pin, &pin->dummy);
+	hal_pin_aim(pin, dummy);
 	return 0;
 }
 
@@ -66,8 +74,8 @@ void hal_pin_unlink_locked(struct hal_pin_rec *pin)
 	if (!sig)
 		return;
 	/* The pin keeps the signal's last value, as if still connected. */
-	pin->dummy.raw = sig->value.raw;
-	hal_pin_aim(pin, &pin->dummy);
+	hal_pin_dummy(pin)->raw = hal_sig_value(sig)->raw;
+	hal_pin_aim(pin, hal_pin_dummy(pin));
 	pin->signal_off = 0;
 	if (pin->dir == HAL_IN)
 		sig->readers--;
@@ -80,6 +88,7 @@ void hal_pin_unlink_locked(struct hal_pin_rec *pin)
 void hal_pin_delete_locked(struct hal_pin_rec *pin)
 {
 	hal_pin_unlink_locked(pin);
+	hal_free_block(hal_seg, hal_pin_dummy(pin));
 	hal_object_delete(&pin->hdr);
 }
 
@@ -93,6 +102,9 @@ int hal_pin_new(const char *name, hal_type_t type, hal_pin_dir_t dir, void **dat
 		rtapi_print_msg(RTAPI_MSG_ERR, "pin '%s': call hal_init first\n", name);
 		return -EINVAL;
 	}
+#ifdef ULAPI
+	return hal_ul_obj_new(HAL_REQ_PIN_NEW, name, type, dir, data_ptr_addr, comp_id);
+#endif
 	hal_lock();
 	comp = hal_comp_by_id(comp_id);
 	if (comp)

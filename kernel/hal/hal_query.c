@@ -17,7 +17,7 @@ int hal_attach(void)
 	if (rc < 0)
 		return rc;
 	attached = true;
-	hal_local_users++;
+	hal_local_user_new();
 	return 0;
 }
 
@@ -26,23 +26,18 @@ void hal_detach(void)
 	if (!attached)
 		return;
 	attached = false;
-	if (--hal_local_users <= 0) {
-		hal_local_users = 0;
-		hal_segment_unmap();
-	}
+	hal_local_user_gone();
 }
 
 void hal_release_mutex(void)
 {
-	if (hal_seg)
-		rtapi_mutex_give(&hal_seg->mutex);
-}
-
-/* hal_query.h promises -EACCES for a locked HAL, so halcmd can tell it from -EPERM
- * (output pin, read-only parameter, signal with a writer). */
-static int check_params_lock(const char *what)
-{
-	return hal_check_lock(HAL_LOCK_PARAMS, what) ? -EACCES : 0;
+	if (!hal_seg)
+		return;
+	if (hal_seg_is_kmod) {	/* the kernel frees it only from a holder that is gone */
+		hal_kmod_recover();
+		return;
+	}
+	hal_lock_give(hal_seg);
 }
 
 static int need_segment(void)
@@ -132,7 +127,7 @@ static void sig_info(const struct hal_sig_rec *s, struct hal_sig_info *out)
 {
 	copy_name(out->name, s->hdr.name);
 	out->type = s->type;
-	read_value(&out->value, s->type, &s->value);
+	read_value(&out->value, s->type, hal_sig_value(s));
 	out->readers = s->readers;
 	out->writers = s->writers;
 	out->bidirs = s->bidirs;
@@ -393,84 +388,55 @@ int hal_find_thread(const char *name, struct hal_thread_info *out)
 	return r ? 0 : -ENOENT;
 }
 
+/* Raw storage bits of a value of 'type' (union hal_data): requests carry no FP. */
+static rtapi_u64 raw_of(int type, const union hal_value *v)
+{
+	union hal_data d;
+
+	d.raw = 0;
+	write_value(&d, type, v);
+	return d.raw;
+}
+
+/* The object's type decides how the value is stored: look it up first. */
 int hal_set_pin_value(const char *name, const union hal_value *v)
 {
-	struct hal_pin_rec *pin;
-	int rc;
+	struct hal_pin_info info;
 
 	if (need_segment())
 		return -EINVAL;
-	hal_lock();
-	rc = check_params_lock("set pins");
-	pin = rc ? 0 : hal_find(HAL_KIND_PIN, name);
-	if (rc) {
-		/* locked: message printed */
-	} else if (!pin) {
-		rtapi_print_msg(RTAPI_MSG_ERR, "pin '%s' does not exist\n", name);
-		rc = -ENOENT;
-	} else if (pin->dir == HAL_OUT) {
-		rtapi_print_msg(RTAPI_MSG_ERR, "pin '%s' is an output: only its component sets it\n",
-				name);
-		rc = -EPERM;
-	} else if (pin->signal_off) {
-		rtapi_print_msg(RTAPI_MSG_ERR, "pin '%s' is linked to signal '%s': use sets instead\n",
-				name, ((struct hal_obj_hdr *)hal_ptr(pin->signal_off))->name);
-		rc = -EBUSY;
-	} else {
-		write_value(&pin->dummy, pin->type, v);
-	}
-	hal_unlock();
-	return rc;
+	info.type = HAL_TYPE_UNSPECIFIED;
+	hal_find_pin(name, &info);	/* a missing pin is reported by the request */
+	return hal_ul_set(HAL_REQ_SET_PIN, name, info.type, raw_of(info.type, v));
 }
 
 int hal_set_param_value(const char *name, const union hal_value *v)
 {
-	struct hal_param_rec *param;
-	int rc;
+	struct hal_param_info info;
 
 	if (need_segment())
 		return -EINVAL;
-	hal_lock();
-	rc = check_params_lock("set parameters");
-	param = rc ? 0 : hal_find(HAL_KIND_PARAM, name);
-	if (rc) {
-		/* locked: message printed */
-	} else if (!param) {
-		rtapi_print_msg(RTAPI_MSG_ERR, "parameter '%s' does not exist\n", name);
-		rc = -ENOENT;
-	} else if (param->dir != HAL_RW) {
-		rtapi_print_msg(RTAPI_MSG_ERR, "parameter '%s' is read-only\n", name);
-		rc = -EPERM;
-	} else {
-		write_value(hal_ptr(param->data_off), param->type, v);
-	}
-	hal_unlock();
-	return rc;
+	info.type = HAL_TYPE_UNSPECIFIED;
+	hal_find_param(name, &info);
+	return hal_ul_set(HAL_REQ_SET_PARAM, name, info.type, raw_of(info.type, v));
 }
 
 int hal_set_sig_value(const char *name, const union hal_value *v)
 {
-	struct hal_sig_rec *sig;
-	int rc;
+	struct hal_sig_info info;
 
 	if (need_segment())
 		return -EINVAL;
-	hal_lock();
-	rc = check_params_lock("set signals");
-	sig = rc ? 0 : hal_find(HAL_KIND_SIG, name);
-	if (rc) {
-		/* locked: message printed */
-	} else if (!sig) {
-		rtapi_print_msg(RTAPI_MSG_ERR, "signal '%s' does not exist\n", name);
-		rc = -ENOENT;
-	} else if (sig->writers) {
-		rtapi_print_msg(RTAPI_MSG_ERR, "signal '%s' already has a writer: cannot set it\n", name);
-		rc = -EPERM;
-	} else {
-		write_value(&sig->value, sig->type, v);
-	}
-	hal_unlock();
-	return rc;
+	info.type = HAL_TYPE_UNSPECIFIED;
+	hal_find_sig(name, &info);
+	return hal_ul_set(HAL_REQ_SET_SIG, name, info.type, raw_of(info.type, v));
+}
+
+int hal_release_module(const char *module)
+{
+	if (need_segment())
+		return -EINVAL;
+	return hal_ul_names(HAL_REQ_MODULE_RELEASE, module, 0, 0);
 }
 
 bool hal_threads_running(void)
@@ -487,29 +453,16 @@ int hal_memory_usage(unsigned long *used, unsigned long *total)
 {
 	if (need_segment())
 		return -EINVAL;
-	*used = hal_seg->heap_start + hal_seg->bytes_used;
+	*used = hal_seg->heap_start + hal_seg->bytes_used + hal_seg->val_bytes_used;
 	*total = hal_seg->size;
 	return 0;
 }
 
 int hal_set_exact_periods(void)
 {
-	int rc = 0;
-
 	if (need_segment())
 		return -EINVAL;
-	hal_lock();
-	if (hal_seg->count[HAL_KIND_THREAD]) {
-		rtapi_print_msg(RTAPI_MSG_ERR, "setexact_for_test_suite_only: a thread exists already: "
-				"it must come before the first thread is created\n");
-		rc = -EBUSY;
-	} else {
-		hal_seg->exact_periods = 1;
-		rtapi_print_msg(RTAPI_MSG_INFO, "HAL takes thread periods exactly as asked; "
-				"this mode is not suitable for running real hardware\n");
-	}
-	hal_unlock();
-	return rc;
+	return hal_ul_names(HAL_REQ_SET_EXACT, 0, 0, 0);
 }
 
 int hal_object_counts(struct hal_counts *out)

@@ -150,6 +150,11 @@ int hal_comp_remove_dead(int comp_id);
 /* hal_comp_remove_dead() for every userspace component; returns how many were removed. */
 int hal_comps_remove_dead(void);
 
+/* Before unloading a kernel module: take the functions of its components off every
+ * thread (its module reference is dropped once no thread runs them). module "" = every
+ * module. Returns the number of its components, or -errno. */
+int hal_release_module(const char *module);
+
 bool hal_threads_running(void);
 /* Base period set by the first thread, 0 if none. */
 long long hal_base_period(void);

@@ -6,6 +6,10 @@
 char *hal_shmem_base;
 struct hal_seg_hdr *hal_seg;
 int hal_local_users;
+#ifdef ULAPI
+bool hal_seg_is_kmod;		/* mapped through /dev/rtapi (hal_ulapi_kmod.c) */
+int rtapi_shmem_kmod_active(void);
+#endif
 
 static int rtapi_module_id;
 static int shmem_id;
@@ -18,12 +22,15 @@ static rtapi_u32 align_up(rtapi_u32 v)
 void hal_segment_init(struct hal_seg_hdr *seg, rtapi_u32 size)
 {
 	rtapi_u32 *buckets;
+	rtapi_u64 *map;
 	rtapi_u32 i;
 
 	seg->magic = HAL_SEG_MAGIC;
 	seg->version = HAL_LAYOUT_VERSION;
 	seg->size = size;
 	seg->mutex = 0;
+	seg->mutex_pid = 0;
+	seg->mutex_holder[0] = 0;
 	seg->lock_level = HAL_LOCK_NONE;
 	seg->threads_running = 0;
 	seg->next_comp_id = 1;
@@ -32,10 +39,18 @@ void hal_segment_init(struct hal_seg_hdr *seg, rtapi_u32 size)
 	buckets = (rtapi_u32 *)((char *)seg + seg->hash_off);
 	for (i = 0; i < HAL_HASH_BUCKETS; i++)
 		buckets[i] = 0;
-	seg->heap_start = align_up(seg->hash_off + HAL_HASH_BUCKETS * sizeof(rtapi_u32));
+	seg->val_start = HAL_VAL_START(size);
+	seg->val_map_off = align_up(seg->hash_off + HAL_HASH_BUCKETS * sizeof(rtapi_u32));
+	map = (rtapi_u64 *)((char *)seg + seg->val_map_off);
+	for (i = 0; i < (size - seg->val_start) / 8 / 64; i++)
+		map[i] = 0;
+	seg->heap_start = align_up(seg->val_map_off + (size - seg->val_start) / 64);
 	seg->heap_top = seg->heap_start;
 	seg->free_head = 0;
 	seg->bytes_used = 0;
+	seg->val_top = seg->val_start;
+	seg->val_bytes_used = 0;
+	seg->val_hint = 0;
 	for (i = 0; i < HAL_KIND_COUNT; i++) {
 		seg->list_head[i] = 0;
 		seg->list_tail[i] = 0;
@@ -80,6 +95,19 @@ int hal_segment_map(void)
 
 	if (hal_shmem_base)
 		return 0;
+#ifdef ULAPI
+	if (rtapi_shmem_kmod_active()) {
+		char *base;
+
+		err = hal_kmod_map(&base);
+		if (err)
+			return err;
+		hal_seg_is_kmod = true;
+		hal_shmem_base = base;
+		hal_seg = (struct hal_seg_hdr *)base;
+		return 0;
+	}
+#endif
 	rtapi_module_id = rtapi_init("hal_lib");
 	if (rtapi_module_id < 0) {
 		rtapi_print_msg(RTAPI_MSG_ERR, "HAL: rtapi_init failed (%d)\n", rtapi_module_id);
@@ -114,6 +142,13 @@ void hal_segment_unmap(void)
 		return;
 	hal_shmem_base = 0;
 	hal_seg = 0;
+#ifdef ULAPI
+	if (hal_seg_is_kmod) {
+		hal_kmod_unmap();
+		hal_seg_is_kmod = false;
+		return;
+	}
+#endif
 	rtapi_shmem_delete(shmem_id, rtapi_module_id);
 	rtapi_exit(rtapi_module_id);
 }

@@ -3,9 +3,10 @@
  * value; linking aims the pin's owner pointer at it. At most one writer. */
 #include "hal_internal.h"
 
-static int signal_new_locked(const char *name, hal_type_t type)
+int hal_signal_new_locked(const char *name, hal_type_t type)
 {
 	struct hal_sig_rec *sig;
+	union hal_data *value;
 	int err;
 
 	if (type != HAL_BIT && type != HAL_FLOAT && type != HAL_S32 && type != HAL_U32 &&
@@ -19,6 +20,14 @@ static int signal_new_locked(const char *name, hal_type_t type)
 	sig = hal_object_new(HAL_KIND_SIG, sizeof(*sig), name, 0, &err);
 	if (!sig)
 		return err;
+	value = hal_alloc_block(hal_seg, sizeof(*value), HAL_KIND_VALUE, 0);
+	if (!value) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "HAL value memory is full: cannot create signal '%s'\n",
+				name);
+		hal_object_delete(&sig->hdr);
+		return -ENOMEM;
+	}
+	sig->value_off = hal_off(value);
 	sig->type = type;
 	return 0;
 }
@@ -31,13 +40,16 @@ int hal_signal_new(const char *signal_name, hal_type_t type)
 		rtapi_print_msg(RTAPI_MSG_ERR, "signal '%s': call hal_init first\n", signal_name);
 		return -EINVAL;
 	}
+#ifdef ULAPI
+	return hal_ul_set(HAL_REQ_SIG_NEW, signal_name, type, 0);
+#endif
 	hal_lock();
-	rc = signal_new_locked(signal_name, type);
+	rc = hal_signal_new_locked(signal_name, type);
 	hal_unlock();
 	return rc;
 }
 
-static int signal_delete_locked(const char *name)
+int hal_signal_delete_locked(const char *name)
 {
 	struct hal_sig_rec *sig;
 	struct hal_obj_hdr *o;
@@ -56,6 +68,7 @@ static int signal_delete_locked(const char *name)
 	for (o = hal_first(HAL_KIND_PIN); o && sig->readers + sig->writers + sig->bidirs; o = hal_next(o))
 		if (((struct hal_pin_rec *)o)->signal_off == sig_off)
 			hal_pin_unlink_locked((struct hal_pin_rec *)o);
+	hal_free_block(hal_seg, hal_sig_value(sig));
 	hal_object_delete(&sig->hdr);
 	return 0;
 }
@@ -66,8 +79,11 @@ int hal_signal_delete(const char *signal_name)
 
 	if (!hal_seg)
 		return -EINVAL;
+#ifdef ULAPI
+	return hal_ul_names(HAL_REQ_SIG_DELETE, signal_name, 0, 0);
+#endif
 	hal_lock();
-	rc = signal_delete_locked(signal_name);
+	rc = hal_signal_delete_locked(signal_name);
 	hal_unlock();
 	return rc;
 }
@@ -87,7 +103,7 @@ static const char *writer_of(struct hal_sig_rec *sig)
 	return "?";
 }
 
-static int link_locked(const char *pin_name, const char *sig_name)
+int hal_link_locked(const char *pin_name, const char *sig_name)
 {
 	struct hal_pin_rec *pin;
 	struct hal_sig_rec *sig;
@@ -128,9 +144,9 @@ static int link_locked(const char *pin_name, const char *sig_name)
 	}
 	/* The first pin on a signal gives it its value, so a setp before net is kept. */
 	if (sig->readers + sig->writers + sig->bidirs == 0)
-		sig->value.raw = pin->dummy.raw;
+		hal_sig_value(sig)->raw = hal_pin_dummy(pin)->raw;
 	pin->signal_off = hal_off(sig);
-	hal_pin_aim(pin, &sig->value);
+	hal_pin_aim(pin, hal_sig_value(sig));
 	if (pin->dir == HAL_IN)
 		sig->readers++;
 	else if (pin->dir == HAL_OUT)
@@ -146,30 +162,42 @@ int hal_link(const char *pin_name, const char *signal_name)
 
 	if (!hal_seg)
 		return -EINVAL;
+#ifdef ULAPI
+	return hal_ul_names(HAL_REQ_LINK, pin_name, signal_name, 0);
+#endif
 	hal_lock();
-	rc = link_locked(pin_name, signal_name);
+	rc = hal_link_locked(pin_name, signal_name);
 	hal_unlock();
 	return rc;
 }
 
-int hal_unlink(const char *pin_name)
+int hal_unlink_locked(const char *pin_name)
 {
 	struct hal_pin_rec *pin;
+	int rc = hal_check_lock(HAL_LOCK_CONFIG, "unlink pins");
+
+	if (rc)
+		return rc;
+	pin = hal_find(HAL_KIND_PIN, pin_name);
+	if (!pin) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "pin '%s' does not exist\n", pin_name);
+		return -ENOENT;
+	}
+	hal_pin_unlink_locked(pin);
+	return 0;
+}
+
+int hal_unlink(const char *pin_name)
+{
 	int rc;
 
 	if (!hal_seg)
 		return -EINVAL;
+#ifdef ULAPI
+	return hal_ul_names(HAL_REQ_UNLINK, pin_name, 0, 0);
+#endif
 	hal_lock();
-	rc = hal_check_lock(HAL_LOCK_CONFIG, "unlink pins");
-	if (!rc) {
-		pin = hal_find(HAL_KIND_PIN, pin_name);
-		if (pin) {
-			hal_pin_unlink_locked(pin);
-		} else {
-			rtapi_print_msg(RTAPI_MSG_ERR, "pin '%s' does not exist\n", pin_name);
-			rc = -ENOENT;
-		}
-	}
+	rc = hal_unlink_locked(pin_name);
 	hal_unlock();
 	return rc;
 }

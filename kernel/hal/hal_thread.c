@@ -9,6 +9,13 @@
 #include "hal_internal.h"
 
 #ifdef RTAPI
+/* A record offset the thread follows: inside the record heap, which only the HAL core
+ * writes (users map it read-only in the kernel flavor). Checked anyway, every time. */
+static bool record_ok(rtapi_u32 off, rtapi_u32 len)
+{
+	return off >= hal_seg->heap_start && off < hal_seg->val_start && len <= hal_seg->val_start - off;
+}
+
 static void run_functions(struct hal_thread_rec *t)
 {
 	long long start = rtapi_get_clocks(), prev = start, now;
@@ -21,9 +28,17 @@ static void run_functions(struct hal_thread_rec *t)
 	__atomic_add_fetch(&t->cycle_seq, 1, __ATOMIC_SEQ_CST);
 	off = __atomic_load_n(&t->first_entry_off, __ATOMIC_SEQ_CST);
 	while (off) {
-		struct hal_entry_rec *e = hal_ptr(off);
-		struct hal_funct_rec *f = hal_ptr(e->funct_off);
-		hal_funct_t fn = (hal_funct_t)(unsigned long)f->funct;
+		struct hal_entry_rec *e;
+		struct hal_funct_rec *f;
+		hal_funct_t fn;
+
+		if (!record_ok(off, sizeof(*e)))
+			break;
+		e = hal_ptr(off);
+		if (!record_ok(e->funct_off, sizeof(*f)))
+			break;
+		f = hal_ptr(e->funct_off);
+		fn = (hal_funct_t)(unsigned long)f->funct;
 
 		fn((void *)(unsigned long)f->arg, (long)t->period_ns);
 		now = rtapi_get_clocks();
@@ -113,6 +128,20 @@ static int overruns_pin_new(const char *name, struct hal_thread_rec *t)
 	return hal_pin_new_locked(buf, HAL_S32, HAL_OUT, (void **)&t->overruns_ptr, 0);
 }
 #endif
+
+/* caller holds the HAL lock (hal_request.c: halcmd setexact_for_test_suite_only) */
+int hal_set_exact_periods_locked(void)
+{
+	if (hal_seg->count[HAL_KIND_THREAD]) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "setexact_for_test_suite_only: a thread exists already: "
+				"it must come before the first thread is created\n");
+		return -EBUSY;
+	}
+	hal_seg->exact_periods = 1;
+	rtapi_print_msg(RTAPI_MSG_INFO, "HAL takes thread periods exactly as asked; "
+			"this mode is not suitable for running real hardware\n");
+	return 0;
+}
 
 static void overruns_pin_delete(const char *name)
 {
@@ -214,6 +243,7 @@ void hal_thread_delete_locked(struct hal_thread_rec *t)
 
 		off = e->next_off;
 		((struct hal_funct_rec *)hal_ptr(e->funct_off))->users--;
+		hal_os_code_put(((struct hal_funct_rec *)hal_ptr(e->funct_off))->module);	/* task stopped */
 		hal_free_block(hal_seg, e);
 	}
 	t->first_entry_off = 0;
@@ -298,19 +328,29 @@ int hal_exit_threads(void)
 }
 #endif
 
+int hal_set_running_locked(int running)
+{
+	int rc = hal_check_lock(HAL_LOCK_RUN, running ? "start threads" : "stop threads");
+
+	if (!rc) {
+		__atomic_store_n(&hal_seg->threads_running, running, __ATOMIC_RELEASE);
+		if (!running)
+			hal_threads_quiesce();
+	}
+	return rc;
+}
+
 static int set_running(int running)
 {
 	int rc;
 
 	if (!hal_seg)
 		return -EINVAL;
+#ifdef ULAPI
+	return hal_ul_names(running ? HAL_REQ_START : HAL_REQ_STOP, 0, 0, 0);
+#endif
 	hal_lock();
-	rc = hal_check_lock(HAL_LOCK_RUN, running ? "start threads" : "stop threads");
-	if (!rc) {
-		__atomic_store_n(&hal_seg->threads_running, running, __ATOMIC_RELEASE);
-		if (!running)
-			hal_threads_quiesce();
-	}
+	rc = hal_set_running_locked(running);
 	hal_unlock();
 	return rc;
 }
@@ -325,6 +365,11 @@ int hal_stop_threads(void)
 	return set_running(0);
 }
 
+/* Wait until every thread that was running its functions has finished that cycle:
+ * then no thread is inside a function whose entry was unlinked before the call, and
+ * the module references of those entries are dropped (puts_pending). Never gives up,
+ * so a module is never freed under a thread; a thread stuck inside a function is
+ * named once a second. */
 void hal_threads_quiesce(void)
 {
 	struct hal_obj_hdr *o;
@@ -335,11 +380,20 @@ void hal_threads_quiesce(void)
 		rtapi_u32 seq = __atomic_load_n(&t->cycle_seq, __ATOMIC_ACQUIRE);
 		int waited;
 
-		/* Bounded: a thread stuck in a function must not hang configuration. */
-		for (waited = 0; (seq & 1) && waited < 10000; waited++) {
+		for (waited = 1; seq & 1; waited++) {
 			rtapi_sleep_ns(100000);
 			if (__atomic_load_n(&t->cycle_seq, __ATOMIC_ACQUIRE) != seq)
 				break;
+			if (waited % 10000 == 0)
+				rtapi_print_msg(RTAPI_MSG_ERR,
+						"HAL: waited %d s for thread '%s' to leave its functions\n",
+						waited / 10000, t->hdr.name);
 		}
+	}
+	for (o = hal_first(HAL_KIND_FUNCT); o; o = hal_next(o)) {
+		struct hal_funct_rec *f = (struct hal_funct_rec *)o;
+
+		for (; f->puts_pending; f->puts_pending--)
+			hal_os_code_put(f->module);
 	}
 }

@@ -38,6 +38,7 @@
 
 /* From hal_host.h, declared here so that rtapi stays below hal in the include order. */
 void hal_set_load_context(const char *module, const char *args);
+void hal_set_load_module(void *owner);
 int hal_exit_module_comps(const char *module);
 
 /* The loadrt arguments as halcmd joined them, for "show comp" and "save": the
@@ -50,24 +51,28 @@ static int __init rtapi_kmod_app_init(void)
 {
 	int rc;
 
+	/* hal_lib serialises module inits and exits here (two insmods at once): the
+	 * context says whose components and memory are being made. */
 	hal_set_load_context(KBUILD_MODNAME, hal_loadrt_args ? hal_loadrt_args : "");
+	hal_set_load_module(THIS_MODULE);
 	rc = rtapi_app_main();
-	hal_set_load_context(NULL, NULL);
 	if (rc) {
 		/* halcmd finds this line in /proc/rtapi/messages and words it as the
 		 * simulated flavor does (hal::kmod, kmod.cpp): keep the two in step. */
 		rtapi_print_msg(RTAPI_MSG_ERR, "%s: rtapi_app_main failed (%d)\n",
 				KBUILD_MODNAME, rc);
 		hal_exit_module_comps(KBUILD_MODNAME);
-		return rc < 0 ? rc : -EINVAL;
 	}
-	return 0;
+	hal_set_load_context(NULL, NULL);
+	return rc < 0 ? rc : rc ? -EINVAL : 0;
 }
 
 static void __exit rtapi_kmod_app_exit(void)
 {
+	hal_set_load_context(KBUILD_MODNAME, "");
 	rtapi_app_exit();
 	hal_exit_module_comps(KBUILD_MODNAME);
+	hal_set_load_context(NULL, NULL);
 }
 
 module_init(rtapi_kmod_app_init);

@@ -10,6 +10,7 @@
 #include <linux/miscdevice.h>
 #include <linux/uaccess.h>
 #include <linux/seq_file.h>
+#include <linux/slab.h>
 #include "rtapi_kmod.h"
 #include "rtapi_shmem_kmod.h"
 
@@ -20,6 +21,24 @@ struct rtapi_shmem {
 	void *mem;			/* vmalloc_user: zeroed, page aligned */
 	DECLARE_BITMAP(modules, RTAPI_MAX_MODULES);	/* modules that called shmem_new */
 	int mappings;			/* userspace VMAs */
+	unsigned long ro_len;		/* protected: read-only below this (page aligned) */
+};
+
+/* Keys whose segments are protected (rtapi_shmem_kmod_protect_key); guarded by
+ * rtapi_kmod_lock, kept for rtapi.ko's lifetime so that no segment is ever created
+ * unprotected under such a key. */
+#define MAX_PROTECTED 4
+static struct {
+	int key;
+	unsigned long ro_len;
+} protected_keys[MAX_PROTECTED];
+static int nprotected;
+
+static const struct rtapi_dev_hook *dev_hook;	/* guarded by rtapi_kmod_lock */
+
+/* Per open file of /dev/rtapi. */
+struct dev_file {
+	unsigned long hook_state;	/* the hook's (hal_lib: holds the HAL mutex) */
 };
 
 static struct rtapi_shmem segs[RTAPI_MAX_SHMEMS];	/* index 0 unused: ids are > 0 */
@@ -81,6 +100,10 @@ int rtapi_shmem_new(int key, int module_id, unsigned long int size)
 	segs[free_id].key = key;
 	segs[free_id].size = size;
 	segs[free_id].mappings = 0;
+	segs[free_id].ro_len = 0;
+	for (id = 0; id < nprotected; id++)
+		if (protected_keys[id].key == key)
+			segs[free_id].ro_len = PAGE_ALIGN(protected_keys[id].ro_len);
 	bitmap_zero(segs[free_id].modules, RTAPI_MAX_MODULES);
 	set_bit(module_id, segs[free_id].modules);
 	rc = free_id;
@@ -118,15 +141,91 @@ int rtapi_shmem_getptr(int shmem_id, void **ptr)
 }
 EXPORT_SYMBOL(rtapi_shmem_getptr);
 
+int rtapi_shmem_kmod_protect_key(int key, unsigned long ro_len)
+{
+	int i, rc = 0;
+
+	mutex_lock(&rtapi_kmod_lock);
+	for (i = 0; i < nprotected && protected_keys[i].key != key; i++)
+		;
+	if (i == MAX_PROTECTED) {
+		rc = -ENOMEM;
+	} else {
+		protected_keys[i].key = key;
+		protected_keys[i].ro_len = ro_len;
+		if (i == nprotected)
+			nprotected++;
+	}
+	mutex_unlock(&rtapi_kmod_lock);
+	return rc;
+}
+EXPORT_SYMBOL(rtapi_shmem_kmod_protect_key);
+
+void rtapi_kmod_set_dev_hook(const struct rtapi_dev_hook *hook)
+{
+	mutex_lock(&rtapi_kmod_lock);
+	dev_hook = hook;
+	mutex_unlock(&rtapi_kmod_lock);
+}
+EXPORT_SYMBOL(rtapi_kmod_set_dev_hook);
+
 /* --- /dev/rtapi --- */
+
+/* The registered hook with a reference on its module, or NULL. */
+static const struct rtapi_dev_hook *hook_get(void)
+{
+	const struct rtapi_dev_hook *h;
+
+	mutex_lock(&rtapi_kmod_lock);
+	h = dev_hook;
+	if (h && !try_module_get(h->owner))
+		h = NULL;	/* being unloaded */
+	mutex_unlock(&rtapi_kmod_lock);
+	return h;
+}
+
+static int dev_open(struct inode *inode, struct file *f)
+{
+	struct dev_file *df = kzalloc(sizeof(*df), GFP_KERNEL);
+
+	if (!df)
+		return -ENOMEM;
+	f->private_data = df;
+	return 0;
+}
+
+static int dev_release(struct inode *inode, struct file *f)
+{
+	struct dev_file *df = f->private_data;
+	const struct rtapi_dev_hook *h;
+
+	if (df->hook_state) {
+		h = hook_get();
+		if (h) {
+			h->release(&df->hook_state);
+			module_put(h->owner);
+		}
+	}
+	kfree(df);
+	return 0;
+}
 
 static long dev_ioctl(struct file *f, unsigned int cmd, unsigned long arg)
 {
+	struct dev_file *df = f->private_data;
 	struct rtapi_shmem_query q;
 	int id;
 
-	if (cmd != RTAPI_IOC_SHMEM_LOOKUP)
-		return -ENOTTY;
+	if (cmd != RTAPI_IOC_SHMEM_LOOKUP) {
+		const struct rtapi_dev_hook *h = hook_get();
+		long rc;
+
+		if (!h)
+			return -ENOTTY;
+		rc = h->ioctl(&df->hook_state, cmd, arg);
+		module_put(h->owner);
+		return rc;
+	}
 	if (copy_from_user(&q, (void __user *)arg, sizeof(q)))
 		return -EFAULT;
 	mutex_lock(&rtapi_kmod_lock);
@@ -171,7 +270,8 @@ static const struct vm_operations_struct seg_vm_ops = {
 
 static int dev_mmap(struct file *f, struct vm_area_struct *vma)
 {
-	unsigned long id = vma->vm_pgoff;
+	unsigned long id = vma->vm_pgoff & ((1ul << RTAPI_SHMEM_ID_BITS) - 1);
+	unsigned long first = vma->vm_pgoff >> RTAPI_SHMEM_ID_BITS;	/* page in the segment */
 	unsigned long len = vma->vm_end - vma->vm_start;
 	struct rtapi_shmem *s;
 	int rc;
@@ -180,12 +280,22 @@ static int dev_mmap(struct file *f, struct vm_area_struct *vma)
 		return -EINVAL;
 	mutex_lock(&rtapi_kmod_lock);
 	s = &segs[id];
-	if (!s->used || len > PAGE_ALIGN(s->size)) {
+	if (!s->used || first >= (PAGE_ALIGN(s->size) >> PAGE_SHIFT) ||
+	    len > PAGE_ALIGN(s->size) - (first << PAGE_SHIFT)) {
 		rc = -EINVAL;
 		goto out;
 	}
-	/* pgoff selects the segment, not an offset inside it */
-	rc = remap_vmalloc_range(vma, s->mem, 0);
+	/* A protected segment: the part below ro_len never maps writable, nor can it
+	 * become so (VM_MAYWRITE cleared: mprotect refuses), and a piece never straddles
+	 * the boundary. */
+	if ((first << PAGE_SHIFT) < s->ro_len) {
+		if ((first << PAGE_SHIFT) + len > s->ro_len || (vma->vm_flags & VM_WRITE)) {
+			rc = -EPERM;
+			goto out;
+		}
+		vma->vm_flags &= ~VM_MAYWRITE;
+	}
+	rc = remap_vmalloc_range(vma, s->mem, first);
 	if (rc)
 		goto out;
 	vma->vm_private_data = s;
@@ -198,6 +308,8 @@ out:
 
 static const struct file_operations dev_fops = {
 	.owner = THIS_MODULE,
+	.open = dev_open,
+	.release = dev_release,
 	.unlocked_ioctl = dev_ioctl,
 	.compat_ioctl = dev_ioctl,	/* fixed-width struct: same layout for 32-bit callers */
 	.mmap = dev_mmap,
@@ -207,7 +319,7 @@ static struct miscdevice dev = {
 	.minor = MISC_DYNAMIC_MINOR,
 	.name = RTAPI_DEVICE_NAME,
 	.fops = &dev_fops,
-	.mode = 0666,	/* like the other flavor: any local user may run HAL tools */
+	.mode = 0660,	/* root and the 'hal' group (udev rule: firmware/udev/) */
 };
 
 void rtapi_shmem_show(struct seq_file *m)

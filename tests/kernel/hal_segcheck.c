@@ -28,7 +28,8 @@ int main(void)
 		perror("HAL segment lookup");
 		return errno == ENOENT ? 1 : 2;
 	}
-	seg = mmap(NULL, q.size, PROT_READ | PROT_WRITE, MAP_SHARED, fd,
+	/* the records only, read-only: nobody maps them writable (docs/kernel-security.md) */
+	seg = mmap(NULL, HAL_VAL_START(q.size), PROT_READ, MAP_SHARED, fd,
 		   (off_t)q.id * sysconf(_SC_PAGESIZE));
 	if (seg == MAP_FAILED) {
 		perror("mmap of the HAL segment");

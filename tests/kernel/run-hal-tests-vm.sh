@@ -47,10 +47,11 @@ for t in $(find "$tests" \( -name test.hal -o -name test.sh \) -type f | sort); 
 	# nothing may stay loaded between tests: fail the test and clean up by hand
 	if [ -e /proc/rtapi ]; then
 		{ echo "left behind after halrun -U:"; lsmod; } >"$work/log"; ok=1
+		# (through the helper: this runs as a 'hal' group member, not root)
 		for m in $(lsmod | awk 'NR > 1 && $1 != "rtapi" && $1 != "hal_lib" { print $1 }'); do
-			rmmod "$m"
+			emc_module_helper remove "$m"
 		done
-		rmmod hal_lib 2>/dev/null; rmmod rtapi 2>/dev/null
+		emc_module_helper remove hal_lib 2>/dev/null; emc_module_helper remove rtapi 2>/dev/null
 	fi
 	if [ $ok -eq 0 ]; then
 		echo "HALTEST PASS $rel"; pass=$((pass + 1))

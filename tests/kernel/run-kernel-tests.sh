@@ -93,12 +93,14 @@ done
 cp "$here/run-hal-tests-vm.sh" "$ird/tests/"
 cc -static -O2 -Wall -I"$root/kernel/rtapi" -I"$root/kernel/hal" \
 	-o "$out/initramfs/tests/hal_segcheck" "$here/hal_segcheck.c"
+cc -static -O2 -Wall -Werror -I"$root/kernel/rtapi" -I"$root/kernel/hal" -I"$root/kernel/components" \
+	-o "$out/initramfs/tests/hal_exploit" "$here/hal_exploit.c"
 cp "$here/init.sh" "$ird/init"
 # Accounts (busybox su): group hal with the member haluser (uid 1000); nobody (65534)
 # is in no group of ours. 06-helper-group makes the helper 4750 root:hal.
 mkdir -p "$ird/etc"
 [ -e "$ird/etc/passwd" ] || printf '%s\n' 'root:x:0:0:root:/:/bin/sh' \
-	'haluser:x:1000:1000:hal member:/tmp:/bin/sh' 'nobody:x:65534:65534:nobody:/:/bin/sh' >"$ird/etc/passwd"
+	'haluser:x:1000:1000:hal member:/home/haluser:/bin/sh' 'nobody:x:65534:65534:nobody:/:/bin/sh' >"$ird/etc/passwd"
 [ -e "$ird/etc/group" ] || printf '%s\n' 'root:x:0:' 'hal:x:990:haluser' 'haluser:x:1000:' \
 	'nogroup:x:65534:' >"$ird/etc/group"
 cp "$cases"/*.sh "$ird/tests/cases/"

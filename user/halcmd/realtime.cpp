@@ -50,6 +50,10 @@ Result<void> rt_unload(const std::string& module)
 {
     if (!kernel_flavor())
         return hal::rtapi_unload(module);
+    // A module whose function is on a thread holds a reference (kernel/rtapi/hal_lib_kmod.c):
+    // take its functions off the threads first, as rtapi_app's unload does.
+    if (hal::kmod::module_loaded("hal_lib") && hal_attach() == 0)
+        hal_release_module(module == "all" ? "" : module.c_str());
     if (auto r = hal::kmod::unload_module(module); !r || module != "all")
         return r;
     // Threads outlive their module until the host goes (threads(9)); rtapi_app

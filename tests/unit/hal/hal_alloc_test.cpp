@@ -221,19 +221,19 @@ TEST_F(HalAlloc, RefusesARequestLargerThanTheSegment)
 
 TEST_F(HalAlloc, ReturnsNullWhenTheSegmentIsFullAndChangesNothing)
 {
-    rtapi_u32 room = kSegSize - seg_->heap_top;
-    void* all = alloc(room - kHdr);   // exactly fills the segment
+    rtapi_u32 room = seg_->val_start - seg_->heap_top;
+    void* all = alloc(room - kHdr);   // exactly fills the record heap
     ASSERT_NE(all, nullptr);
-    EXPECT_EQ(seg_->heap_top, kSegSize);
+    EXPECT_EQ(seg_->heap_top, seg_->val_start);
     rtapi_u32 used = seg_->bytes_used;
     EXPECT_EQ(alloc(1), nullptr);
     EXPECT_EQ(seg_->bytes_used, used);
-    EXPECT_EQ(seg_->heap_top, kSegSize);
+    EXPECT_EQ(seg_->heap_top, seg_->val_start);
 }
 
 TEST_F(HalAlloc, SpaceFreedByAnOwnerCanBeAllocatedAgainWhenFull)
 {
-    rtapi_u32 room = kSegSize - seg_->heap_top;
+    rtapi_u32 room = seg_->val_start - seg_->heap_top;
     alloc(room / 2, 7);
     alloc(room / 2 - 64, 8);
     EXPECT_EQ(alloc(room / 2, 9), nullptr);
@@ -242,3 +242,53 @@ TEST_F(HalAlloc, SpaceFreedByAnOwnerCanBeAllocatedAgainWhenFull)
 }
 
 }  // namespace
+
+// The value area (signal values, dummies, userspace components' memory) has no block
+// headers: a bitmap in the record heap hands out its granules, so users who may write
+// the value area cannot forge allocator metadata.
+TEST_F(HalAlloc, ValueBlocksComeFromTheValueAreaWithoutHeadersThere)
+{
+    void* rec = alloc(40);
+    void* val = hal_alloc_block(seg_, 8, HAL_KIND_VALUE, 3);
+    void* mem = hal_alloc_block(seg_, 60, HAL_KIND_UMALLOC, 3);
+    ASSERT_NE(val, nullptr);
+    ASSERT_NE(mem, nullptr);
+    EXPECT_LT(off(rec), seg_->val_start);
+    EXPECT_GE(off(val), seg_->val_start);
+    EXPECT_EQ(off(mem), off(val) + 8);   // back to back: nothing between them
+    EXPECT_EQ(seg_->val_start % 4096, 0u);
+    EXPECT_EQ(seg_->val_bytes_used, 8u + 64u);
+    EXPECT_LT(seg_->val_map_off, seg_->heap_start);
+    std::memset(mem, 0xff, 64);          // a user scribbling over it changes nothing below
+    hal_free_owned(seg_, 3);             // the hal_malloc memory goes with its owner
+    hal_free_block(seg_, val);
+    EXPECT_EQ(seg_->val_bytes_used, 0u);
+    void* again = hal_alloc_block(seg_, 16, HAL_KIND_VALUE, 0);
+    EXPECT_EQ(off(again), off(val));     // first fit reuses the freed granules
+}
+
+TEST_F(HalAlloc, ValueAreaRefusesWhenFullAndFindsFreedRuns)
+{
+    rtapi_u32 total = seg_->size - seg_->val_start;
+    void* all = hal_alloc_block(seg_, total, HAL_KIND_VALUE, 0);
+    ASSERT_NE(all, nullptr);
+    EXPECT_EQ(hal_alloc_block(seg_, 8, HAL_KIND_VALUE, 0), nullptr);
+}
+
+// hal_umalloc_owned() is how the core checks an offset a user sent: the whole range
+// must be inside hal_malloc() memory of that very component.
+TEST_F(HalAlloc, UmallocOwnedAcceptsOnlyWholeRangesOfTheOwnersMemory)
+{
+    char* mem = static_cast<char*>(hal_alloc_block(seg_, 64, HAL_KIND_UMALLOC, 9));
+    char* other = static_cast<char*>(hal_alloc_block(seg_, 64, HAL_KIND_UMALLOC, 10));
+    ASSERT_NE(mem, nullptr);
+    EXPECT_TRUE(hal_umalloc_owned(seg_, 9, off(mem), 8));
+    EXPECT_TRUE(hal_umalloc_owned(seg_, 9, off(mem) + 56, 8));
+    EXPECT_FALSE(hal_umalloc_owned(seg_, 9, off(mem) + 60, 8));    // runs past it
+    EXPECT_FALSE(hal_umalloc_owned(seg_, 9, off(other), 8));       // another owner's
+    EXPECT_FALSE(hal_umalloc_owned(seg_, 9, seg_->heap_start, 8)); // the records
+    EXPECT_FALSE(hal_umalloc_owned(seg_, 9, 0xfffffff0u, 8));
+    EXPECT_FALSE(hal_umalloc_owned(seg_, 9, off(mem), 0xffffffffu));
+    hal_free_owned(seg_, 9);
+    EXPECT_FALSE(hal_umalloc_owned(seg_, 9, off(mem), 8));
+}

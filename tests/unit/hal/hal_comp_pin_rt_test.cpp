@@ -272,13 +272,13 @@ TEST_F(HalRt, AnUnlinkedPinPointsAtItsOwnDummyStorage)
 {
     ASSERT_EQ(hal_pin_float_new("rt.a", HAL_OUT, &pins_->f[0], comp_), 0);
     ASSERT_EQ(hal_pin_float_new("rt.b", HAL_OUT, &pins_->f[1], comp_), 0);
-    EXPECT_EQ(pins_->f[0], &pin_rec("rt.a")->dummy.f);
+    EXPECT_EQ(pins_->f[0], &hal_pin_dummy(pin_rec("rt.a"))->f);
     EXPECT_NE(pins_->f[0], pins_->f[1]);
     *pins_->f[0] = 2.5;
     *pins_->f[1] = -1.0;
     EXPECT_EQ(*pins_->f[0], 2.5);
-    EXPECT_EQ(pin_rec("rt.a")->dummy.f, 2.5);
-    EXPECT_EQ(pin_rec("rt.b")->dummy.f, -1.0);
+    EXPECT_EQ(hal_pin_dummy(pin_rec("rt.a"))->f, 2.5);
+    EXPECT_EQ(hal_pin_dummy(pin_rec("rt.b"))->f, -1.0);
 }
 
 TEST_F(HalRt, ANewPinStartsAtZero)
@@ -298,7 +298,7 @@ TEST_F(HalRt, ExitOfAComponentUnlinksItsPinsFromSignals)
     *pp->b[0] = true;
     ASSERT_EQ(hal_exit(id), 0);
     EXPECT_EQ(sig_rec("rt.sig")->writers, 0);
-    EXPECT_EQ(sig_rec("rt.sig")->value.b, true);   // the signal keeps its value
+    EXPECT_EQ(hal_sig_value(sig_rec("rt.sig"))->b, true);   // the signal keeps its value
     ASSERT_EQ(hal_pin_bit_new("rt.new.out", HAL_OUT, &pins_->b[0], comp_), 0);
     EXPECT_EQ(hal_link("rt.new.out", "rt.sig"), 0);   // the writer slot is free again
 }

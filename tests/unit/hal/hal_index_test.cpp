@@ -300,7 +300,8 @@ TEST_F(HalIndex, FiftyThousandNamesStayFindable)
 
 TEST_F(HalIndex, ReportsEnomemWhenTheSegmentIsFull)
 {
-    make_segment(seg_->heap_start + 2 * (sizeof(struct hal_pin_rec) + sizeof(struct hal_block_hdr)));
+    // the record heap ends where the value area starts: room for exactly two pins
+    seg_->val_start = seg_->heap_start + 2 * (sizeof(struct hal_pin_rec) + sizeof(struct hal_block_hdr));
     hal_test::MsgCapture msgs;
     EXPECT_NE(make(HAL_KIND_PIN, "p1"), nullptr);
     EXPECT_NE(make(HAL_KIND_PIN, "p2"), nullptr);

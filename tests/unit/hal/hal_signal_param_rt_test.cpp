@@ -32,7 +32,7 @@ TEST_F(HalRt, SignalNewCreatesASignalOfEachType)
         std::string n = "sig." + std::to_string(t);
         ASSERT_EQ(new_signal(n, t), 0);
         EXPECT_EQ(sig_rec(n)->type, t);
-        EXPECT_EQ(sig_rec(n)->value.raw, 0u);
+        EXPECT_EQ(hal_sig_value(sig_rec(n))->raw, 0u);
     }
 }
 
@@ -68,9 +68,9 @@ TEST_F(HalRt, SignalDeleteRefusesAnUnknownSignal)
 TEST_F(HalLink, LinkAimsThePinAtTheSignalValue)
 {
     ASSERT_EQ(hal_link("rt.in", "sf"), 0);
-    EXPECT_EQ(pins_->f[2], &sig_rec("sf")->value.f);
+    EXPECT_EQ(pins_->f[2], &hal_sig_value(sig_rec("sf"))->f);
     EXPECT_EQ(sig_rec("sf")->readers, 1);
-    sig_rec("sf")->value.f = 4.25;
+    hal_sig_value(sig_rec("sf"))->f = 4.25;
     EXPECT_EQ(*pins_->f[2], 4.25);
 }
 
@@ -156,7 +156,7 @@ TEST_F(HalLink, TheFirstLinkedPinGivesTheSignalItsValue)
 {
     *pins_->f[2] = 7.5;   // setp rt.in 7.5, then net
     ASSERT_EQ(hal_link("rt.in", "sf"), 0);
-    EXPECT_EQ(sig_rec("sf")->value.f, 7.5);
+    EXPECT_EQ(hal_sig_value(sig_rec("sf"))->f, 7.5);
     EXPECT_EQ(*pins_->f[2], 7.5);
 }
 
@@ -167,7 +167,7 @@ TEST_F(HalLink, ALaterLinkedPinTakesTheSignalsValue)
     ASSERT_EQ(hal_link("rt.in", "sf"), 0);
     ASSERT_EQ(hal_link("rt.in2", "sf"), 0);
     EXPECT_EQ(*pins_->f[3], 7.5);
-    EXPECT_EQ(sig_rec("sf")->value.f, 7.5);
+    EXPECT_EQ(hal_sig_value(sig_rec("sf"))->f, 7.5);
 }
 
 TEST_F(HalLink, UnlinkKeepsTheSignalsLastValueInThePin)
@@ -177,7 +177,7 @@ TEST_F(HalLink, UnlinkKeepsTheSignalsLastValueInThePin)
     *pins_->f[0] = 3.5;
     ASSERT_EQ(hal_unlink("rt.in"), 0);
     EXPECT_EQ(*pins_->f[2], 3.5);
-    EXPECT_EQ(pins_->f[2], &pin_rec("rt.in")->dummy.f);
+    EXPECT_EQ(pins_->f[2], &hal_pin_dummy(pin_rec("rt.in"))->f);
     *pins_->f[0] = 9.0;
     EXPECT_EQ(*pins_->f[2], 3.5);
     EXPECT_EQ(sig_rec("sf")->readers, 0);
@@ -195,7 +195,7 @@ TEST_F(HalLink, UnlinkOfAWriterFreesTheWriterSlot)
 TEST_F(HalLink, UnlinkOfAnUnlinkedPinIsHarmless)
 {
     EXPECT_EQ(hal_unlink("rt.in"), 0);
-    EXPECT_EQ(pins_->f[2], &pin_rec("rt.in")->dummy.f);
+    EXPECT_EQ(pins_->f[2], &hal_pin_dummy(pin_rec("rt.in"))->f);
 }
 
 TEST_F(HalLink, UnlinkRefusesAnUnknownPin)
@@ -216,9 +216,9 @@ TEST_F(HalLink, SignalDeleteUnlinksEveryPinAndKeepsTheirValues)
     EXPECT_EQ(sig_rec("sf"), nullptr);
     for (const char* p : {"rt.out", "rt.in", "rt.in2"}) {
         EXPECT_EQ(pin_rec(p)->signal_off, 0u) << p;
-        EXPECT_EQ(pin_rec(p)->dummy.f, 1.25) << p;
+        EXPECT_EQ(hal_pin_dummy(pin_rec(p))->f, 1.25) << p;
     }
-    EXPECT_EQ(pins_->f[2], &pin_rec("rt.in")->dummy.f);
+    EXPECT_EQ(pins_->f[2], &hal_pin_dummy(pin_rec("rt.in"))->f);
     EXPECT_EQ(*pins_->f[3], 1.25);
     EXPECT_NE(pin_rec("rt.out2")->signal_off, 0u);   // other signals untouched
     EXPECT_EQ(hal_signal_delete("sf"), -ENOENT);

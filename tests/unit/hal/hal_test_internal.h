@@ -32,6 +32,37 @@ void *hal_object_new(enum hal_kind kind, rtapi_u32 size, const char *name, rtapi
 void hal_object_delete(struct hal_obj_hdr *obj);
 void hal_lock(void);
 void hal_unlock(void);
+bool hal_umalloc_owned(const struct hal_seg_hdr *seg, rtapi_u32 owner_off, rtapi_u32 off, rtapi_u32 len);
+
+/* the HAL mutex and its holder record (hal_lock.c) */
+int hal_lock_try(struct hal_seg_hdr *seg, int self, const char *name, int *dead_pid);
+void hal_lock_give(struct hal_seg_hdr *seg);
+void hal_lock_seg(struct hal_seg_hdr *seg);
+void hal_lock_set_liveness_check(bool (*alive)(int pid));
+
+/* configuration requests (hal_request.c) */
+#include "hal_request.h"
+#ifndef HAL_INTERNAL_H
+struct hal_caller {
+	bool is_user;
+	int pid;
+};
+#endif
+int hal_req_execute(struct hal_req *r, const struct hal_caller *c);
+
+#ifdef __cplusplus
+}
+/* Value storage, as hal_internal.h's inline helpers find it. */
+inline union hal_data* hal_pin_dummy(const struct hal_pin_rec* pin)
+{
+    return reinterpret_cast<union hal_data*>(hal_shmem_base + pin->dummy_off);
+}
+inline union hal_data* hal_sig_value(const struct hal_sig_rec* sig)
+{
+    return reinterpret_cast<union hal_data*>(hal_shmem_base + sig->value_off);
+}
+extern "C" {
+#endif
 
 #ifdef __cplusplus
 }
