@@ -144,6 +144,21 @@ int hal_param_alias(const char *param_name, const char *alias)
 	return alias_set(HAL_KIND_PARAM, param_name, alias);
 }
 
+/* The alias record named 'name' of this kind, or NULL (a real object's name is no alias).
+ * Only unalias (hal_unalias_locked) looks aliases up by their own name. */
+static struct hal_alias_rec *alias_named(enum hal_kind kind, const char *name)
+{
+	rtapi_u32 off;
+
+	for (off = hal_seg->alias_head; off; off = alias_at(off)->hdr.next_off) {
+		struct hal_alias_rec *a = alias_at(off);
+
+		if (a->hdr.kind == kind && strcmp(a->hdr.name, name) == 0)
+			return a;
+	}
+	return 0;
+}
+
 /* caller holds the HAL lock (hal_request.c: halcmd unalias) */
 int hal_unalias_locked(enum hal_kind kind, const char *name)
 {
@@ -168,21 +183,6 @@ int hal_unalias_locked(enum hal_kind kind, const char *name)
 }
 
 #ifdef ULAPI
-
-/* The alias record named 'name' of this kind, or NULL (a real object's name is no alias).
- * Only unalias, a ULAPI call, looks aliases up by their own name. */
-static struct hal_alias_rec *alias_named(enum hal_kind kind, const char *name)
-{
-	rtapi_u32 off;
-
-	for (off = hal_seg->alias_head; off; off = alias_at(off)->hdr.next_off) {
-		struct hal_alias_rec *a = alias_at(off);
-
-		if (a->hdr.kind == kind && strcmp(a->hdr.name, name) == 0)
-			return a;
-	}
-	return 0;
-}
 
 /* --- tools (hal_query.h) --- */
 
