@@ -63,7 +63,14 @@ namespace {
 
 Error bad_value(std::string_view text, const char* type, const char* accepted)
 {
-    return Error{-22, "'" + std::string(text) + "' is not a valid " + type + " value (" + accepted + ")"};
+    std::string msg = "'";   // appended piecewise: "'" + std::string trips GCC 12's -Wrestrict at -O3
+    msg += text;
+    msg += "' is not a valid ";
+    msg += type;
+    msg += " value (";
+    msg += accepted;
+    msg += ")";
+    return Error{-22, std::move(msg)};
 }
 
 // Optional sign, then decimal digits or 0x + hex digits; the whole text must match.
