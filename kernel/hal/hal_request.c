@@ -25,14 +25,16 @@ static bool type_ok(int type)
 	       type == HAL_S64 || type == HAL_U64;
 }
 
-/* Store raw bits as a value of 'type' (a bit is normalised to 0/1). */
-static void store_raw(volatile union hal_data *d, int type, rtapi_u64 raw)
+/* Store raw bits as a value of 'type' (a bit is normalised to 0/1), through a pointer
+ * to the value's own type: a parameter is only as aligned as its type, so an access
+ * through union hal_data (8-byte aligned) would be undefined behaviour. */
+static void store_raw(volatile void *d, int type, rtapi_u64 raw)
 {
 	switch (type) {
-	case HAL_BIT: d->b = (raw & 0xff) != 0; break;
-	case HAL_S32: d->s = (rtapi_s32)(rtapi_u32)raw; break;
-	case HAL_U32: d->u = (rtapi_u32)raw; break;
-	default: __atomic_store_n(&d->raw, raw, __ATOMIC_RELAXED); break;	/* 64 bits: no tearing */
+	case HAL_BIT: *(volatile hal_bit_t *)d = (raw & 0xff) != 0; break;
+	case HAL_S32: *(volatile hal_s32_t *)d = (rtapi_s32)(rtapi_u32)raw; break;
+	case HAL_U32: *(volatile hal_u32_t *)d = (rtapi_u32)raw; break;
+	default: rtapi_store_u64((volatile rtapi_u64 *)d, raw); break;	/* 64 bits: no tearing */
 	}
 }
 
