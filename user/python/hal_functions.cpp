@@ -176,10 +176,12 @@ bool pin_has_writer(const std::string& name)
     return hal_find_sig(pin.signal, &sig) == 0 && sig.writers > 0;
 }
 
-pyb::list get_info_pins()
+// A pin's or a parameter's dict: the same keys for both (they differ only in their dir type).
+template <class Info, class Query>
+pyb::list info_dicts(Query query)
 {
     pyb::list out;
-    for (const hal_pin_info& p : all_of<hal_pin_info>(hal_query_pins)) {
+    for (const Info& p : all_of<Info>(query)) {
         pyb::dict d;
         d["NAME"] = p.name;
         d["VALUE"] = from_hal(p.type, p.value);
@@ -188,6 +190,11 @@ pyb::list get_info_pins()
         out.append(d);
     }
     return out;
+}
+
+pyb::list get_info_pins()
+{
+    return info_dicts<hal_pin_info>(hal_query_pins);
 }
 
 pyb::list get_info_signals()
@@ -211,16 +218,7 @@ pyb::list get_info_signals()
 
 pyb::list get_info_params()
 {
-    pyb::list out;
-    for (const hal_param_info& p : all_of<hal_param_info>(hal_query_params)) {
-        pyb::dict d;
-        d["NAME"] = p.name;
-        d["VALUE"] = from_hal(p.type, p.value);
-        d["TYPE"] = static_cast<int>(p.type);
-        d["DIRECTION"] = static_cast<int>(p.dir);
-        out.append(d);
-    }
-    return out;
+    return info_dicts<hal_param_info>(hal_query_params);
 }
 
 void set_msg_level(int level)
