@@ -109,7 +109,9 @@ SAN_ENV = ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:detect_stack_use_after_re
 
 sanitize-test:
 	@$(MAKE) --no-print-directory deps
-	cmake -S . -B $(SAN_BUILD) -DHAL_SANITIZE=ON $(CMAKE_FLAGS)
+	# -O1 -g1: half the compile time of -O2 -g, still enough for ASan's reports
+	cmake -S . -B $(SAN_BUILD) -DHAL_SANITIZE=ON -DCMAKE_BUILD_TYPE=SanCheck \
+		'-DCMAKE_C_FLAGS_SANCHECK=-O1 -g1' '-DCMAKE_CXX_FLAGS_SANCHECK=-O1 -g1' $(CMAKE_FLAGS)
 	cmake --build $(SAN_BUILD) -j$(JOBS)
 	cd $(SAN_BUILD) && $(SAN_ENV) ctest --output-on-failure -j$(JOBS)
 	$(SAN_ENV) HAL_TEST_TIMEOUT=300 FAULT_ROUNDS=$(SAN_FAULT_ROUNDS) \
