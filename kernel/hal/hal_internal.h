@@ -47,7 +47,7 @@ int hal_lock_try(struct hal_seg_hdr *seg, int self, const char *name, int *dead_
 void hal_lock_set_liveness_check(bool (*alive)(int pid));
 int hal_set_lock_locked(unsigned lock_type);
 
-/* --- the operating system, per flavor (hal_os_uspace.c, hal_lib_kmod.c) --- */
+/* --- the operating system, per flavor (kernel/rtapi/hal_os_uspace.c, hal_lib_kmod.c) --- */
 int hal_os_self(char *name, int len);	/* this process's pid (tgid); its name into name */
 bool hal_os_pid_alive(int pid);
 /* 0, or -EPERM with a message naming 'what' when 'level' is locked. */
@@ -184,7 +184,7 @@ int hal_ul_obj_new(enum hal_req_op op, const char *name, int type, int dir, vola
 		   int comp_id);
 int hal_ul_set(enum hal_req_op op, const char *name, int type, rtapi_u64 raw);
 int hal_ul_set_own_param(const char *name, hal_type_t type, void *value_addr);
-/* Kernel flavor (hal_ulapi_kmod.c): /dev/rtapi mapped here, or not. */
+/* Kernel flavor (kernel/rtapi/hal_ulapi_kmod.c): /dev/rtapi mapped here, or not. */
 extern bool hal_seg_is_kmod;
 int hal_kmod_map(char **base);
 void hal_kmod_unmap(void);

@@ -2,7 +2,7 @@
 /* hal_request_ul.c - userspace side of hal_request.h: every HAL call of a userspace
  * program that changes something becomes a request. In the simulated flavor it runs
  * here under the HAL mutex; in the kernel flavor the segment is read-only here and the
- * request goes to hal_lib.ko through /dev/rtapi (hal_ulapi_kmod.c), which prints nothing:
+ * request goes to hal_lib.ko through /dev/rtapi (kernel/rtapi/hal_ulapi_kmod.c), which prints nothing:
  * its messages come back in the request and are printed here. ULAPI only. */
 #include "hal_internal.h"
 #include "rtapi_string.h"

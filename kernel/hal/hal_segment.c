@@ -7,7 +7,7 @@ char *hal_shmem_base;
 struct hal_seg_hdr *hal_seg;
 int hal_local_users;
 #ifdef ULAPI
-bool hal_seg_is_kmod;		/* mapped through /dev/rtapi (hal_ulapi_kmod.c) */
+bool hal_seg_is_kmod;		/* mapped through /dev/rtapi (kernel/rtapi/hal_ulapi_kmod.c) */
 int rtapi_shmem_kmod_active(void);
 #endif
 
