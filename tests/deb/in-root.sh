@@ -24,7 +24,7 @@ version=$(dpkg-query -W -f='${Version}' hal)
 
 check "hal group exists" getent group hal
 check "emc_module_helper is 4750 root:hal" sh -c '[ "$(stat -c %a:%U:%G /usr/bin/emc_module_helper)" = 4750:root:hal ]'
-check "udev rule for /dev/rtapi" grep -q 'KERNEL=="rtapi", GROUP="hal"' /lib/udev/rules.d/60-hal.rules
+check "udev rule for /dev/rtapi" grep -q 'KERNEL=="rtapi".*GROUP="hal", MODE="0660"' /lib/udev/rules.d/60-hal.rules
 check "a man page for every program" sh -c '
 	for p in $(dpkg -L hal hal-dev | grep "^/usr/bin/"); do
 		n=${p##*/}; ls /usr/share/man/man1/$n.1* >/dev/null 2>&1 || { echo "no page for $n"; exit 1; }

@@ -1,9 +1,6 @@
 # Build twice.comp (no FUNCTION(_) in it) and run it.
 set -e
-tmp=${TEST_TMPDIR:-$(mktemp -d)}
-rtlib=$(dirname "$(command -v halrun)")/../rtlib
-mkdir -p "$tmp/rtlib" "$tmp/src"
-ln -sf "$rtlib/threads.so" "$tmp/rtlib/threads.so"
+. ../private-rtlib.sh
 cp twice.comp "$tmp/src/"
 cd "$tmp/src"
 HAL_RTLIB_DIR=$tmp/rtlib halcompile --install twice.comp

@@ -1,10 +1,7 @@
 # GAIN comes only from --extra-compile-args; the link marker only from --extra-link-args;
 # with --personalities=2 a third personality= value is refused.
 set -e
-tmp=${TEST_TMPDIR:-$(mktemp -d)}
-rtlib=$(dirname "$(command -v halrun)")/../rtlib
-mkdir -p "$tmp/rtlib" "$tmp/src"
-ln -sf "$rtlib/threads.so" "$tmp/rtlib/threads.so"
+. ../private-rtlib.sh
 cp pers.comp "$tmp/src/"
 cd "$tmp/src"
 HAL_RTLIB_DIR=$tmp/rtlib halcompile --install --extra-compile-args=-DGAIN=3 \

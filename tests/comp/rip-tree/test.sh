@@ -1,10 +1,7 @@
 # Build a hand-written module with only -I RIP/include (as LinuxCNC Makefiles do), then load it.
 set -e
-tmp=${TEST_TMPDIR:-$(mktemp -d)}
-rip=$(dirname "$(command -v halrun)")/..
+. ../private-rtlib.sh
 ls "$rip/lib" | grep '\.a$'	# the libraries (lib/ also holds the Python module)
-mkdir -p "$tmp/rtlib"
-ln -sf "$rip/rtlib/threads.so" "$tmp/rtlib/threads.so"
 cat > "$tmp/ripmod.c" <<'C'
 #include "rtapi.h"
 #include "rtapi_app.h"
