@@ -24,6 +24,7 @@ version=$(dpkg-query -W -f='${Version}' hal)
 
 check "hal group exists" getent group hal
 check "emc_module_helper is 4750 root:hal" sh -c '[ "$(stat -c %a:%U:%G /usr/bin/emc_module_helper)" = 4750:root:hal ]'
+check "realtime limits for group hal" grep -q "^@hal.*rtprio" /etc/security/limits.d/hal.conf
 check "udev rule for /dev/rtapi" grep -q 'KERNEL=="rtapi".*GROUP="hal", MODE="0660"' /lib/udev/rules.d/60-hal.rules
 check "a man page for every program" sh -c '
 	for p in $(dpkg -L hal hal-dev | grep "^/usr/bin/"); do
