@@ -10,7 +10,8 @@
  * OUT), inv.result (s32 OUT). home.L (float IN): the forward's first guess, and its
  * guess after a failure (otherwise the previous result, as motion does). type (s32
  * OUT: kinematicsType), switchable (bit OUT), switch-type (s32 IN: a change calls
- * kinematicsSwitch), switch-result (s32 OUT). Function kinstest.update (FP). */
+ * kinematicsSwitch), switch-result (s32 OUT), cycles (u32 OUT: updates run).
+ * Function kinstest.update (FP). */
 #include "rtapi.h"
 #include "rtapi_app.h"
 #include "hal.h"
@@ -29,8 +30,6 @@ static const char axis_names[KINS_NUM_AXES] = { 'x', 'y', 'z', 'a', 'b', 'c', 'u
 
 static int export_pins(struct kinstest *k)
 {
-	hal_bit_t *switchable;
-	hal_s32_t *type;
 	int err = 0, n;
 
 	for (n = 0; !err && n < k->joints; n++) {
@@ -63,13 +62,15 @@ static int export_pins(struct kinstest *k)
 	if (!err)
 		err = hal_pin_s32_newf(HAL_OUT, &k->switch_result, comp_id, "kinstest.switch-result");
 	if (!err)
-		err = hal_pin_s32_newf(HAL_OUT, &type, comp_id, "kinstest.type");
+		err = hal_pin_s32_newf(HAL_OUT, &k->type, comp_id, "kinstest.type");
 	if (!err)
-		err = hal_pin_bit_newf(HAL_OUT, &switchable, comp_id, "kinstest.switchable");
+		err = hal_pin_bit_newf(HAL_OUT, &k->switchable, comp_id, "kinstest.switchable");
+	if (!err)
+		err = hal_pin_u32_newf(HAL_OUT, &k->cycles, comp_id, "kinstest.cycles");
 	if (err)
 		return err;
-	*type = kinematicsType();
-	*switchable = kinematicsSwitchable() != 0;
+	*k->type = kinematicsType();
+	*k->switchable = kinematicsSwitchable() != 0;
 	return hal_export_funct("kinstest.update", kinstest_update, k, 1, 0, comp_id);
 }
 

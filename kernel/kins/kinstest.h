@@ -15,6 +15,9 @@ struct kinstest {
 	hal_u32_t *fwd_fflags, *fwd_iflags, *inv_iflags, *inv_fflags;
 	hal_s32_t *fwd_result, *inv_result;
 	hal_s32_t *switch_type, *switch_result;
+	hal_s32_t *type;		/* set at load */
+	hal_bit_t *switchable;		/* set at load */
+	hal_u32_t *cycles;		/* updates run, so tests can wait for results */
 	rtapi_s32 applied_switch;	/* private to update(): the last switch type asked for */
 	bool have_world;		/* private to update(): the last forward succeeded */
 	EmcPose world;			/* private to update(): its result, the next guess */

@@ -53,4 +53,5 @@ void kinstest_update(void *arg, long period_ns)
 	if (rc == 0)
 		for (n = 0; n < k->joints; n++)
 			*k->joint_out[n] = j[n];
+	*k->cycles += 1;
 }
