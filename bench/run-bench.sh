@@ -78,6 +78,9 @@ halrun -U >/dev/null 2>&1
 echo "== stepgen: maximum step rates and make-pulses cost"
 "$build/bin/stepgen_bench"
 
+echo "== kinematics: ns per forward / inverse call of each module"
+"$build/bin/kins_bench"
+
 echo "== hostmot2: hm2 read + write per cycle, simulated 5i25+7i76 layout (simulated flavor)"
 "$here/hostmot2-bench.sh" "$build" 3
 

@@ -1,0 +1,56 @@
+/* SPDX-License-Identifier: GPL-2.0-or-later */
+/* rotatekins.c - rotated kinematics, kins(9), kinematics.md section 4:
+ *   loadrt rotatekins
+ * Nine joints; joints 0 and 1 are X and Y rotated by the C coordinate (not by a fixed
+ * 45° as the page says: the table frame turns with C). No pins. Type BOTH. */
+#include "rtapi.h"
+#include "rtapi_app.h"
+#include "hal.h"
+#include "kins_glue.h"
+
+MODULE_LICENSE("GPL");
+MODULE_DESCRIPTION("rotated-table kinematics");
+
+static int comp_id;
+
+KINEMATICS_TYPE kinematicsType(void)
+{
+	return KINEMATICS_BOTH;
+}
+
+static KINEMATICS_TYPE own_type(void) __attribute__((alias("kinematicsType")));
+
+int kinematicsSwitchable(void)
+{
+	return 0;
+}
+
+int kinematicsSwitch(int switchkins_type)
+{
+	return switchkins_type == KINS_SWITCH_PRIMARY ? 0 : -EINVAL;
+}
+
+EXPORT_SYMBOL(kinematicsForward);
+EXPORT_SYMBOL(kinematicsInverse);
+EXPORT_SYMBOL(kinematicsHome);
+EXPORT_SYMBOL(kinematicsType);
+EXPORT_SYMBOL(kinematicsSwitchable);
+EXPORT_SYMBOL(kinematicsSwitch);
+
+int rtapi_app_main(void)
+{
+	int err = kins_claim("rotatekins", kinematicsType, own_type);
+
+	if (err)
+		return err;
+	comp_id = hal_init("rotatekins");
+	if (comp_id < 0)
+		return comp_id;
+	hal_ready(comp_id);
+	return 0;
+}
+
+void rtapi_app_exit(void)
+{
+	hal_exit(comp_id);
+}
