@@ -183,6 +183,9 @@ static int create_locked(const char *name, unsigned long period, int uses_fp)
 	err = overruns_pin_new(name, t);
 	if (err)
 		goto undo_timing;
+#ifndef __KERNEL__
+	rtapi_task_lockstep(hal_seg->exact_periods);	/* repeatable runs for test suites */
+#endif
 	t->task_id = rtapi_task_new(hal_thread_task, t, prio, 0, uses_fp);
 	if (t->task_id < 0) {
 		err = t->task_id;
@@ -328,11 +331,25 @@ int hal_exit_threads(void)
 }
 #endif
 
+#if defined(RTAPI) && !defined(__KERNEL__)
+static void store_running(void *arg)
+{
+	__atomic_store_n(&hal_seg->threads_running, *(int *)arg, __ATOMIC_RELEASE);
+}
+#endif
+
 int hal_set_running_locked(int running)
 {
 	int rc = hal_check_lock(HAL_LOCK_RUN, running ? "start threads" : "stop threads");
 
 	if (!rc) {
+#if defined(RTAPI) && !defined(__KERNEL__)
+		/* lock step (exact periods): start between two cycles, with every thread
+		 * due at once, so the first cycles run in the same order every time */
+		if (hal_seg->exact_periods && running)
+			rtapi_task_lockstep_sync(store_running, &running);
+		else
+#endif
 		__atomic_store_n(&hal_seg->threads_running, running, __ATOMIC_RELEASE);
 		if (!running)
 			hal_threads_quiesce();

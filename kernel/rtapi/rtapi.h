@@ -183,6 +183,12 @@ int rtapi_is_kernelspace(void);		/* 0 here */
  * what a driver that locks the thread to an external clock uses. */
 long long rtapi_task_pll_get_reference(void);
 int rtapi_task_pll_set_correction(long value);
+/* Lock-step mode for periodic tasks started from now on (HAL's setexact_for_test_suite_only):
+ * one task runs at a time, in the order of their releases in virtual time (ties: higher
+ * priority first), so runs repeat exactly. _sync() calls fn between two cycles and makes
+ * every task due at once, in priority order, from there on. */
+void rtapi_task_lockstep(int on);
+void rtapi_task_lockstep_sync(void (*fn)(void *), void *arg);
 #endif
 
 /* --- non-realtime helper used by HAL to wait for threads to finish a cycle --- */

@@ -29,7 +29,7 @@ build_static() {
 		"-DREADLINE_LIBRARY=/usr/lib/$libdir/libreadline.a;/usr/lib/$libdir/libtinfo.a" \
 		-DHAL_KMOD_INSTALL_DIR=$vm_moddir -DCMAKE_INSTALL_PREFIX=/usr &&
 	  cmake --build "$static" -j"$(nproc)" --target halcmd halrun realtime halsampler halstreamer emc_module_helper \
-		thread_cost
+		thread_cost pyhal
 	} >"$static.log" 2>&1 || { cat "$static.log" >&2; exit 1; }
 }
 
@@ -94,6 +94,9 @@ for d in "$root"/tests/*/; do
 	cp -r "${d%/}" "$ird/tests/hal/"
 done
 cp "$here/run-hal-tests-vm.sh" "$ird/tests/"
+# Python for the Python HAL tests: Debian's interpreter with its shared libraries, a
+# trimmed stdlib and the hal module of the static build (kernel-flavor ULAPI at run time)
+"$here/vm-python.sh" "$static" "$ird"
 cc -static -O2 -Wall -I"$root/kernel/rtapi" -I"$root/kernel/hal" \
 	-o "$out/initramfs/tests/hal_segcheck" "$here/hal_segcheck.c"
 cc -static -O2 -Wall -Werror -I"$root/kernel/rtapi" -I"$root/kernel/hal" -I"$root/kernel/components" \
