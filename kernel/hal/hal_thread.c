@@ -73,7 +73,12 @@ static void hal_thread_task(void *arg)
 	struct hal_thread_rec *t = arg;
 
 	for (;;) {
-		if (__atomic_load_n(&hal_seg->threads_running, __ATOMIC_ACQUIRE))
+		int running = __atomic_load_n(&hal_seg->threads_running, __ATOMIC_ACQUIRE);
+
+#ifndef __KERNEL__
+		running = rtapi_task_lockstep_gate(running);	/* exact periods: "start" in step */
+#endif
+		if (running)
 			run_functions(t);
 		rtapi_task_wait();
 		note_overruns(t);
@@ -331,25 +336,11 @@ int hal_exit_threads(void)
 }
 #endif
 
-#if defined(RTAPI) && !defined(__KERNEL__)
-static void store_running(void *arg)
-{
-	__atomic_store_n(&hal_seg->threads_running, *(int *)arg, __ATOMIC_RELEASE);
-}
-#endif
-
 int hal_set_running_locked(int running)
 {
 	int rc = hal_check_lock(HAL_LOCK_RUN, running ? "start threads" : "stop threads");
 
 	if (!rc) {
-#if defined(RTAPI) && !defined(__KERNEL__)
-		/* lock step (exact periods): start between two cycles, with every thread
-		 * due at once, so the first cycles run in the same order every time */
-		if (hal_seg->exact_periods && running)
-			rtapi_task_lockstep_sync(store_running, &running);
-		else
-#endif
 		__atomic_store_n(&hal_seg->threads_running, running, __ATOMIC_RELEASE);
 		if (!running)
 			hal_threads_quiesce();

@@ -12,9 +12,9 @@
  * has a virtual next release; a token goes to the task with the earliest one (ties:
  * the higher priority, then the lower id), which sleeps until the matching wall-clock
  * time, runs one cycle and hands the token on in rtapi_task_wait(). Nothing is skipped
- * when late, and no overrun is counted. rtapi_task_lockstep_sync() runs a function
- * between two cycles and restarts every task's schedule at one common instant (HAL
- * "start"), so the first cycles after it are always in the same order. */
+ * when late, and no overrun is counted. rtapi_task_lockstep_gate() lets the tasks
+ * restart their schedule at one common instant when a gate opens (HAL's "start"),
+ * so the first cycles after it are always in the same order. */
 #include <pthread.h>
 #include <sched.h>
 #include <stdio.h>
@@ -62,6 +62,7 @@ static struct rtapi_task_rec *ls_holder;	/* who runs now, or NULL */
 static int ls_external_waiting;		/* rtapi_task_lockstep_sync() callers */
 static long long ls_vnow;		/* virtual time of the last release */
 static long long ls_origin_ns;		/* rtapi_get_time() at virtual time 0 */
+static int ls_gate;			/* last value rtapi_task_lockstep_gate() saw */
 static void ls_kick(void);
 static void sleep_until(long long when_ns);
 
@@ -195,6 +196,7 @@ static int ls_next_turn(struct rtapi_task_rec *t)
 	} else {
 		if (!ls_holder && !ls_scheduled_count()) {	/* alone: a new origin */
 			ls_vnow = 0;
+			ls_gate = 0;
 			ls_origin_ns = rtapi_get_time();
 		}
 		t->next_vt = (ls_vnow + period - 1) / period * period;
@@ -243,32 +245,33 @@ void rtapi_task_lockstep(int on)
 	pthread_mutex_unlock(&ls_lock);
 }
 
-void rtapi_task_lockstep_sync(void (*fn)(void *), void *arg)
+int rtapi_task_lockstep_gate(int value)
 {
-	struct rtapi_task_rec *self = current_task;
-	long long start = -1;
+	struct rtapi_task_rec *t = current_task;
 	int i;
 
+	value = value != 0;
+	if (!t || !t->lockstep || !t->in_sched)
+		return value;
 	pthread_mutex_lock(&ls_lock);
-	if (ls_scheduled_count() && !(self && ls_holder == self)) {
-		ls_external_waiting++;
-		ls_dispatch();
-		while (ls_holder != LS_EXTERNAL)
-			pthread_cond_wait(&ls_turn, &ls_lock);
-		ls_external_waiting--;
-	}
-	fn(arg);
-	for (i = 1; i <= RTAPI_MAX_TASKS; i++)	/* every task due at the earliest release */
-		if (tasks[i].in_sched && (start < 0 || tasks[i].next_vt < start))
-			start = tasks[i].next_vt;
-	for (i = 1; i <= RTAPI_MAX_TASKS; i++)
-		if (tasks[i].in_sched && &tasks[i] != self)
-			tasks[i].next_vt = start;
-	if (ls_holder == LS_EXTERNAL) {
-		ls_holder = NULL;
-		ls_dispatch();
+	if (value != ls_gate && ls_holder == t) {
+		ls_gate = value;
+		if (value) {	/* opened: everyone due now, the highest priority first */
+			for (i = 1; i <= RTAPI_MAX_TASKS; i++)
+				if (tasks[i].in_sched)
+					tasks[i].next_vt = ls_vnow;
+			ls_holder = NULL;
+			ls_dispatch();
+			while (ls_holder != t && !ls_must_leave(t))
+				pthread_cond_wait(&ls_turn, &ls_lock);
+			if (ls_holder != t) {
+				ls_leave(t);	/* paused or deleted: rtapi_task_wait() sees it */
+				value = 0;
+			}
+		}
 	}
 	pthread_mutex_unlock(&ls_lock);
+	return value;
 }
 
 static void *task_main(void *arg)

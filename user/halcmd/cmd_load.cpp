@@ -167,12 +167,12 @@ std::string stop_child(int pid)
             while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
             }
             remove_dead_user_components();
-            return "killed it (pid " + std::to_string(pid) + ", SIGKILL: it ignored SIGTERM)";
+            return "killed (pid " + std::to_string(pid) + ", SIGKILL: it ignored SIGTERM)";
         }
         std::this_thread::sleep_for(poll_interval);
     }
     remove_dead_user_components();
-    return "stopped it (pid " + std::to_string(pid) + ", SIGTERM)";
+    return "stopped (pid " + std::to_string(pid) + ", SIGTERM)";
 }
 
 Result<void> wait_until_ready(int pid, const std::string& program, const std::string& name,
@@ -192,7 +192,7 @@ Result<void> wait_until_ready(int pid, const std::string& program, const std::st
         if (std::chrono::steady_clock::now() > deadline)
             return Error{-ETIMEDOUT, "loadusr: waited " + std::to_string(limit.count()) +
                                          " s for component '" + name + "' to become ready; " +
-                                         "giving up: '" + program + "' " + stop_child(pid)};
+                                         "'" + program + "' " + stop_child(pid)};
         std::this_thread::sleep_for(poll_interval);
     }
 }
