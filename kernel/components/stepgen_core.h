@@ -172,6 +172,20 @@ static inline bool stepgen_may_step(struct stepgen_pulse *p, int type,
 	       (!reverse || p->since_step >= t->steplen + t->dirdelay);
 }
 
+/* Type 0, no step due: the dir pin follows the sign of the rate as soon as dirhold
+ * allows, as LinuxCNC's stepgen does, so that dirsetup has passed by the time the
+ * accumulator crosses and the first step the other way comes in that very period. */
+static inline void stepgen_turn_early(struct stepgen_pulse *p, const struct stepgen_timing *t,
+				      rtapi_s64 addval)
+{
+	bool reverse = addval < 0;
+
+	if (addval == 0 || p->dir_pin == reverse || p->pulse_high || p->since_fall < t->dirhold)
+		return;
+	p->dir_pin = reverse;
+	p->since_dir = 0;
+}
+
 /* One make-pulses period for one generator: time passes, the position advances
  * by addval (unless held or disabled), at most one step is made, and out[] is
  * set: type 0 out[0] = step, out[1] = dir; type 1 out[0] = up, out[1] = down;
@@ -199,6 +213,8 @@ static inline int stepgen_pulse_step(struct stepgen_pulse *p, int type,
 			rtapi_store_u64(&p->accum, (rtapi_u64)accum);
 		}
 		target = accum >> 32;	/* floor: gcc shifts signed values arithmetically */
+		if (type == 0 && target == p->rawcount)
+			stepgen_turn_early(p, t, (rtapi_s64)rtapi_load_u64(&p->addval));
 		if (target != p->rawcount) {
 			dir = target > p->rawcount ? 1 : -1;
 			if (stepgen_may_step(p, type, t, dir)) {

@@ -63,6 +63,7 @@ typedef hal_pin_dir_t hal_in_dir_t;	/* name used by hal_pin_new(3hal) */
 int hal_init(const char *name);		/* > 0 component id, or -errno */
 int hal_exit(int comp_id);
 int hal_ready(int comp_id);
+int hal_unready(int comp_id);		/* back to not ready: more pins may follow */
 void *hal_malloc(long int size);		/* 8-byte aligned, zeroed; NULL on failure */
 typedef int (*hal_constructor_t)(const char *prefix, const char *arg);
 int hal_set_constructor(int comp_id, hal_constructor_t constructor);

@@ -314,28 +314,40 @@ int hal_realtime_object_count(void)
 	return n;
 }
 
-int hal_ready(int comp_id)
+static int set_ready(int comp_id, int ready, const char *what)
 {
 	struct hal_comp_rec *comp;
 	int rc = 0;
 
 	if (!hal_seg) {
-		rtapi_print_msg(RTAPI_MSG_ERR, "hal_ready(%d): HAL is not initialised\n", comp_id);
+		rtapi_print_msg(RTAPI_MSG_ERR, "%s(%d): HAL is not initialised\n", what, comp_id);
 		return -EINVAL;
 	}
 #ifdef ULAPI
-	return hal_ul_comp_id_req(HAL_REQ_COMP_READY, comp_id);
+	return hal_ul_comp_id_req(ready ? HAL_REQ_COMP_READY : HAL_REQ_COMP_UNREADY, comp_id);
 #endif
 	hal_lock();
 	comp = hal_comp_by_id(comp_id);
 	if (comp)
-		comp->is_ready = 1;
+		comp->is_ready = ready;
 	hal_unlock();
 	if (!comp) {
-		rtapi_print_msg(RTAPI_MSG_ERR, "hal_ready: component id %d does not exist\n", comp_id);
+		rtapi_print_msg(RTAPI_MSG_ERR, "%s: component id %d does not exist\n", what, comp_id);
 		rc = -EINVAL;
 	}
 	return rc;
+}
+
+int hal_ready(int comp_id)
+{
+	return set_ready(comp_id, 1, "hal_ready");
+}
+
+/* LinuxCNC 2.9's hal_unready: a ready component becomes not ready again, e.g. a Python
+ * component that adds pins after ready() (loadusr -W then waits for the next ready). */
+int hal_unready(int comp_id)
+{
+	return set_ready(comp_id, 0, "hal_unready");
 }
 
 int hal_set_constructor(int comp_id, hal_constructor_t constructor)

@@ -96,14 +96,15 @@ static int comp_exit(struct hal_req *r, const struct hal_caller *c)
 	return 0;
 }
 
-static int comp_ready(struct hal_req *r, const struct hal_caller *c)
+static int comp_ready(struct hal_req *r, const struct hal_caller *c, int ready)
 {
-	struct hal_comp_rec *comp = c->is_user ? own_comp(r->comp_id, c, "hal_ready")
+	const char *what = ready ? "hal_ready" : "hal_unready";
+	struct hal_comp_rec *comp = c->is_user ? own_comp(r->comp_id, c, what)
 					       : hal_comp_by_id(r->comp_id);
 
 	if (!comp)
 		return -EINVAL;
-	comp->is_ready = 1;
+	comp->is_ready = ready;
 	return 0;
 }
 
@@ -314,7 +315,9 @@ int hal_req_execute(struct hal_req *r, const struct hal_caller *c)
 		/* value: where the caller maps the segment; only its own pins point there */
 		return hal_comp_new_locked(r->name, false, c->pid, r->value);
 	case HAL_REQ_COMP_READY:
-		return comp_ready(r, c);
+		return comp_ready(r, c, 1);
+	case HAL_REQ_COMP_UNREADY:
+		return comp_ready(r, c, 0);
 	case HAL_REQ_COMP_EXIT:
 		return comp_exit(r, c);
 	case HAL_REQ_MALLOC:

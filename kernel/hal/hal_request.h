@@ -46,6 +46,7 @@ enum hal_req_op {
 	HAL_REQ_UNALIAS,	/* arg = 0 pin / 1 param, name = an alias or a pin/param */
 	HAL_REQ_SET_EXACT,	/* setexact_for_test_suite_only (before the first thread) */
 	HAL_REQ_COMP_REMOVE_DEAD,	/* comp_id (0: every one) of a process that is gone */
+	HAL_REQ_COMP_UNREADY,	/* comp_id */
 	HAL_REQ_OP_END
 };
 

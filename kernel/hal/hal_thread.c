@@ -73,7 +73,12 @@ static void hal_thread_task(void *arg)
 	struct hal_thread_rec *t = arg;
 
 	for (;;) {
-		if (__atomic_load_n(&hal_seg->threads_running, __ATOMIC_ACQUIRE))
+		int running = __atomic_load_n(&hal_seg->threads_running, __ATOMIC_ACQUIRE);
+
+#ifndef __KERNEL__
+		running = rtapi_task_lockstep_gate(running);	/* exact periods: "start" in step */
+#endif
+		if (running)
 			run_functions(t);
 		rtapi_task_wait();
 		note_overruns(t);
@@ -183,6 +188,9 @@ static int create_locked(const char *name, unsigned long period, int uses_fp)
 	err = overruns_pin_new(name, t);
 	if (err)
 		goto undo_timing;
+#ifndef __KERNEL__
+	rtapi_task_lockstep(hal_seg->exact_periods);	/* repeatable runs for test suites */
+#endif
 	t->task_id = rtapi_task_new(hal_thread_task, t, prio, 0, uses_fp);
 	if (t->task_id < 0) {
 		err = t->task_id;

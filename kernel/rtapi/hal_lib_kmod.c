@@ -261,6 +261,7 @@ module_exit(hal_lib_kmod_exit);
 EXPORT_SYMBOL(hal_init);
 EXPORT_SYMBOL(hal_exit);
 EXPORT_SYMBOL(hal_ready);
+EXPORT_SYMBOL(hal_unready);
 EXPORT_SYMBOL(hal_malloc);
 EXPORT_SYMBOL(hal_set_constructor);
 EXPORT_SYMBOL(hal_set_load_context);

@@ -183,6 +183,15 @@ int rtapi_is_kernelspace(void);		/* 0 here */
  * what a driver that locks the thread to an external clock uses. */
 long long rtapi_task_pll_get_reference(void);
 int rtapi_task_pll_set_correction(long value);
+/* Lock-step mode for periodic tasks started from now on (HAL's setexact_for_test_suite_only):
+ * one task runs at a time, in the order of their releases in virtual time (ties: higher
+ * priority first), so runs repeat exactly. A lock-step task passes the value of a gate
+ * (HAL: threads running) through _gate() at the top of each cycle and acts on what it
+ * returns: when the gate has opened since any task last looked, every task becomes due
+ * at this instant and the caller waits for its turn among them. Other callers get the
+ * value back unchanged. */
+void rtapi_task_lockstep(int on);
+int rtapi_task_lockstep_gate(int value);
 #endif
 
 /* --- non-realtime helper used by HAL to wait for threads to finish a cycle --- */

@@ -5,7 +5,16 @@
  * A task that falls behind by whole periods counts them as overruns and skips them.
  * rtapi_task_delete sets a stop flag that the task sees in rtapi_task_wait(), where it
  * leaves through pthread_exit(); the deleter then joins it. So a task whose code is
- * "for (;;) { work(); rtapi_task_wait(); }" stops within one period. */
+ * "for (;;) { work(); rtapi_task_wait(); }" stops within one period.
+ *
+ * Lock-step mode (rtapi_task_lockstep(), HAL's setexact_for_test_suite_only): periodic
+ * tasks run one at a time in virtual time, so test results repeat exactly. Each task
+ * has a virtual next release; a token goes to the task with the earliest one (ties:
+ * the higher priority, then the lower id), which sleeps until the matching wall-clock
+ * time, runs one cycle and hands the token on in rtapi_task_wait(). Nothing is skipped
+ * when late, and no overrun is counted. rtapi_task_lockstep_gate() lets the tasks
+ * restart their schedule at one common instant when a gate opens (HAL's "start"),
+ * so the first cycles after it are always in the same order. */
 #include <pthread.h>
 #include <sched.h>
 #include <stdio.h>
@@ -32,6 +41,9 @@ struct rtapi_task_rec {
 	long long next_ns;		/* next release; the task thread's own */
 	long pll_correction_ns;		/* added to the next period once; the task thread's own */
 	long long overruns;		/* atomic: written by the task thread */
+	int lockstep;			/* the task thread's own: scheduled by the token */
+	int in_sched;			/* guarded by ls_lock: waits for or holds the token */
+	long long next_vt;		/* guarded by ls_lock: next release in virtual time */
 	pthread_mutex_t lock;		/* with 'wake': only to sleep while paused */
 	pthread_cond_t wake;
 };
@@ -40,6 +52,19 @@ static pthread_mutex_t task_lock = PTHREAD_MUTEX_INITIALIZER;
 static struct rtapi_task_rec tasks[RTAPI_MAX_TASKS + 1];	/* [0] unused: ids are 1.. */
 static __thread struct rtapi_task_rec *current_task;
 static int fifo_refused;	/* guarded by task_lock: warned once, normal scheduling since */
+
+/* Lock-step scheduling, all guarded by ls_lock. */
+#define LS_EXTERNAL ((struct rtapi_task_rec *)&ls_holder)	/* a non-task holds it */
+static pthread_mutex_t ls_lock = PTHREAD_MUTEX_INITIALIZER;
+static pthread_cond_t ls_turn = PTHREAD_COND_INITIALIZER;
+static int ls_on;			/* new periodic tasks join the lock step */
+static struct rtapi_task_rec *ls_holder;	/* who runs now, or NULL */
+static int ls_external_waiting;		/* rtapi_task_lockstep_sync() callers */
+static long long ls_vnow;		/* virtual time of the last release */
+static long long ls_origin_ns;		/* rtapi_get_time() at virtual time 0 */
+static int ls_gate;			/* last value rtapi_task_lockstep_gate() saw */
+static void ls_kick(void);
+static void sleep_until(long long when_ns);
 
 static struct rtapi_task_rec *task_get(int task_id, const char *what)
 {
@@ -66,6 +91,73 @@ static void set_state(struct rtapi_task_rec *t, int state)
 	__atomic_store_n(&t->state, state, __ATOMIC_RELEASE);
 	pthread_cond_broadcast(&t->wake);
 	pthread_mutex_unlock(&t->lock);
+	ls_kick();
+}
+
+static int ls_scheduled_count(void)
+{
+	int i, n = 0;
+
+	for (i = 1; i <= RTAPI_MAX_TASKS; i++)
+		n += tasks[i].in_sched;
+	return n;
+}
+
+/* Give a free token to whoever is next: a waiting rtapi_task_lockstep_sync() first,
+ * then the task with the earliest virtual release. ls_lock held. */
+static void ls_dispatch(void)
+{
+	struct rtapi_task_rec *best = NULL;
+	int i;
+
+	if (ls_holder)
+		return;
+	if (ls_external_waiting) {
+		ls_holder = LS_EXTERNAL;
+		pthread_cond_broadcast(&ls_turn);
+		return;
+	}
+	for (i = 1; i <= RTAPI_MAX_TASKS; i++) {
+		struct rtapi_task_rec *t = &tasks[i];
+
+		if (!t->in_sched)
+			continue;
+		if (!best || t->next_vt < best->next_vt ||
+		    (t->next_vt == best->next_vt && t->prio > best->prio))
+			best = t;
+	}
+	if (best) {
+		ls_holder = best;
+		ls_vnow = best->next_vt;
+		pthread_cond_broadcast(&ls_turn);
+	}
+}
+
+/* The task leaves the schedule (paused, deleted), handing the token on. ls_lock held. */
+static void ls_leave(struct rtapi_task_rec *t)
+{
+	t->in_sched = 0;
+	if (ls_holder == t) {
+		ls_holder = NULL;
+		ls_dispatch();
+	}
+}
+
+static void ls_leave_locking(struct rtapi_task_rec *t)
+{
+	if (!t->lockstep)
+		return;
+	pthread_mutex_lock(&ls_lock);
+	ls_leave(t);
+	pthread_mutex_unlock(&ls_lock);
+}
+
+/* Wake tasks waiting for the token so that they see a new state or stop flag. */
+static void ls_kick(void)
+{
+	pthread_mutex_lock(&ls_lock);
+	pthread_cond_broadcast(&ls_turn);
+	pthread_mutex_unlock(&ls_lock);
 }
 
 /* Called by the task itself: block while paused; leave the thread when deleted. */
@@ -73,6 +165,7 @@ static void wait_while_paused(struct rtapi_task_rec *t)
 {
 	if (__atomic_load_n(&t->state, __ATOMIC_ACQUIRE) == TASK_PAUSED ||
 	    __atomic_load_n(&t->stop, __ATOMIC_ACQUIRE)) {
+		ls_leave_locking(t);
 		pthread_mutex_lock(&t->lock);
 		while (__atomic_load_n(&t->state, __ATOMIC_ACQUIRE) == TASK_PAUSED &&
 		       !__atomic_load_n(&t->stop, __ATOMIC_ACQUIRE))
@@ -81,6 +174,104 @@ static void wait_while_paused(struct rtapi_task_rec *t)
 		if (__atomic_load_n(&t->stop, __ATOMIC_ACQUIRE))
 			pthread_exit(NULL);
 	}
+}
+
+static int ls_must_leave(struct rtapi_task_rec *t)
+{
+	return __atomic_load_n(&t->stop, __ATOMIC_ACQUIRE) ||
+	       __atomic_load_n(&t->state, __ATOMIC_ACQUIRE) != TASK_PERIODIC;
+}
+
+/* Hand the token on and wait for the next turn: one period later in virtual time, or,
+ * joining the schedule, at the first multiple of the period not before the virtual
+ * present. Then sleep until that turn's wall-clock time. Returns -1 without the token,
+ * out of the schedule, when the task is paused or deleted meanwhile. */
+static int ls_next_turn(struct rtapi_task_rec *t)
+{
+	long long period = t->period_ns, release;
+
+	pthread_mutex_lock(&ls_lock);
+	if (t->in_sched) {
+		t->next_vt += period;
+	} else {
+		if (!ls_holder && !ls_scheduled_count()) {	/* alone: a new origin */
+			ls_vnow = 0;
+			ls_gate = 0;
+			ls_origin_ns = rtapi_get_time();
+		}
+		t->next_vt = (ls_vnow + period - 1) / period * period;
+		t->in_sched = 1;
+	}
+	if (ls_holder == t)
+		ls_holder = NULL;
+	ls_dispatch();
+	while (ls_holder != t && !ls_must_leave(t))
+		pthread_cond_wait(&ls_turn, &ls_lock);
+	if (ls_holder != t) {
+		ls_leave(t);
+		pthread_mutex_unlock(&ls_lock);
+		return -1;
+	}
+	release = ls_origin_ns + t->next_vt;
+	pthread_mutex_unlock(&ls_lock);
+	t->next_ns = release;
+	if (rtapi_get_time() < release)
+		sleep_until(release);
+	return 0;
+}
+
+/* rtapi_task_wait() of a lock-step task: returns holding the token, or free-running. */
+static void ls_task_wait(struct rtapi_task_rec *t)
+{
+	for (;;) {
+		wait_while_paused(t);		/* leaves the schedule first; exits if deleted */
+		if (__atomic_load_n(&t->state, __ATOMIC_ACQUIRE) == TASK_FREERUN) {
+			sched_yield();
+			return;
+		}
+		__atomic_store_n(&t->resync, 0, __ATOMIC_RELAXED);
+		if (ls_next_turn(t) == 0) {
+			wait_while_paused(t);	/* paused or deleted while asleep */
+			if (t->in_sched)
+				return;
+		}
+	}
+}
+
+void rtapi_task_lockstep(int on)
+{
+	pthread_mutex_lock(&ls_lock);
+	ls_on = on != 0;
+	pthread_mutex_unlock(&ls_lock);
+}
+
+int rtapi_task_lockstep_gate(int value)
+{
+	struct rtapi_task_rec *t = current_task;
+	int i;
+
+	value = value != 0;
+	if (!t || !t->lockstep || !t->in_sched)
+		return value;
+	pthread_mutex_lock(&ls_lock);
+	if (value != ls_gate && ls_holder == t) {
+		ls_gate = value;
+		if (value) {	/* opened: everyone due now, the highest priority first */
+			for (i = 1; i <= RTAPI_MAX_TASKS; i++)
+				if (tasks[i].in_sched)
+					tasks[i].next_vt = ls_vnow;
+			ls_holder = NULL;
+			ls_dispatch();
+			while (ls_holder != t && !ls_must_leave(t))
+				pthread_cond_wait(&ls_turn, &ls_lock);
+			if (ls_holder != t) {
+				ls_leave(t);	/* paused or deleted: rtapi_task_wait() sees it */
+				value = 0;
+			}
+		}
+	}
+	pthread_mutex_unlock(&ls_lock);
+	return value;
 }
 
 static void *task_main(void *arg)
@@ -94,7 +285,13 @@ static void *task_main(void *arg)
 	wait_while_paused(t);		/* created paused: start or resume releases it */
 	__atomic_store_n(&t->resync, 0, __ATOMIC_RELAXED);
 	t->next_ns = rtapi_get_time();
+	pthread_mutex_lock(&ls_lock);
+	t->lockstep = ls_on;
+	pthread_mutex_unlock(&ls_lock);
+	if (t->lockstep)
+		ls_task_wait(t);	/* the first cycle waits for its turn too */
 	t->code(t->arg);
+	ls_leave_locking(t);
 	return NULL;			/* the task code returned: the thread ends */
 }
 
@@ -180,6 +377,8 @@ int rtapi_task_new(void (*taskcode)(void *), void *arg, int prio,
 	t->period_ns = 0;
 	t->pll_correction_ns = 0;
 	t->overruns = 0;
+	t->lockstep = 0;
+	t->in_sched = 0;
 	pthread_mutex_init(&t->lock, NULL);
 	pthread_cond_init(&t->wake, NULL);
 	err = create_thread(t, stacksize);	/* uses_fp: threads always have the FPU here */
@@ -212,6 +411,7 @@ int rtapi_task_delete(int task_id)
 	__atomic_store_n(&t->stop, 1, __ATOMIC_RELEASE);
 	pthread_cond_broadcast(&t->wake);
 	pthread_mutex_unlock(&t->lock);
+	ls_kick();
 	clock_gettime(CLOCK_REALTIME, &limit);
 	limit.tv_sec += RTAPI_DELETE_WARN_S;
 	if (pthread_timedjoin_np(t->thread, NULL, &limit) != 0) {
@@ -325,6 +525,10 @@ void rtapi_task_wait(void)
 
 	if (!t) {
 		rtapi_print_msg(RTAPI_MSG_ERR, "rtapi: rtapi_task_wait called outside a task\n");
+		return;
+	}
+	if (t->lockstep) {
+		ls_task_wait(t);
 		return;
 	}
 	wait_while_paused(t);

@@ -16,6 +16,9 @@ for t in $(find "$tests" \( -name test.hal -o -name test.sh \) -type f | sort); 
 	if [ -e "$dir/skip-flavor-kernel" ]; then
 		echo "HALTEST SKIP $rel"; skip=$((skip + 1)); continue
 	fi
+	if [ -e "$dir/needs-python" ] && ! command -v python3 >/dev/null 2>&1; then
+		echo "HALTEST SKIP $rel (no python3 in the VM: KTEST_PYTHON=1)"; skip=$((skip + 1)); continue
+	fi
 	rm -rf "$work/tmp"; mkdir -p "$work/tmp"
 	(
 		cd "$dir" || exit 99

@@ -10,6 +10,7 @@
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <thread>
 
@@ -26,6 +27,7 @@ namespace {
 using namespace std::chrono_literals;
 constexpr auto poll_interval = 20ms;
 constexpr auto ready_timeout = 20s;      // loadusr -W: generous for slow (sanitizer) builds
+constexpr auto kill_grace = 2s;          // loadusr -W timed out: SIGTERM, then SIGKILL
 constexpr auto exit_timeout = 10s;       // unloadusr: SIGTERM to gone
 
 bool process_alive(int pid)
@@ -135,9 +137,48 @@ std::string describe_status(int status)
     return "stopped";
 }
 
-Result<void> wait_until_ready(int pid, const std::string& program, const std::string& name)
+// loadusr -W's limit: HALCMD_READY_TIMEOUT (whole seconds, >= 1) when set, else 20 s.
+Result<std::chrono::seconds> ready_limit()
 {
-    auto deadline = std::chrono::steady_clock::now() + ready_timeout;
+    const char* env = std::getenv("HALCMD_READY_TIMEOUT");
+    if (!env)
+        return std::chrono::seconds(ready_timeout);
+    char* end = nullptr;
+    errno = 0;
+    long v = std::strtol(env, &end, 10);
+    if (errno || end == env || *end || v < 1 || v > 86400)
+        return Error{-EINVAL, std::string("loadusr: HALCMD_READY_TIMEOUT='") + env +
+                                  "' is not a number of seconds from 1 to 86400"};
+    return std::chrono::seconds(v);
+}
+
+// A child that did not become ready in time must not stay behind half-started:
+// SIGTERM, SIGKILL after a grace period, reaped, its components removed.
+std::string stop_child(int pid)
+{
+    kill(pid, SIGTERM);
+    auto deadline = std::chrono::steady_clock::now() + kill_grace;
+    for (;;) {
+        int status;
+        if (waitpid(pid, &status, WNOHANG) == pid)
+            break;
+        if (std::chrono::steady_clock::now() > deadline) {
+            kill(pid, SIGKILL);
+            while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+            }
+            remove_dead_user_components();
+            return "killed (pid " + std::to_string(pid) + ", SIGKILL: it ignored SIGTERM)";
+        }
+        std::this_thread::sleep_for(poll_interval);
+    }
+    remove_dead_user_components();
+    return "stopped (pid " + std::to_string(pid) + ", SIGTERM)";
+}
+
+Result<void> wait_until_ready(int pid, const std::string& program, const std::string& name,
+                              std::chrono::seconds limit)
+{
+    auto deadline = std::chrono::steady_clock::now() + limit;
     for (;;) {
         hal_comp_info c;
         if (hal_find_comp(name.c_str(), &c) == 0 && c.is_ready)
@@ -149,8 +190,9 @@ Result<void> wait_until_ready(int pid, const std::string& program, const std::st
                                       " before component '" + name + "' became ready"};
         }
         if (std::chrono::steady_clock::now() > deadline)
-            return Error{-ETIMEDOUT, "loadusr: waited " + std::to_string(ready_timeout.count()) +
-                                         " s for component '" + name + "' to become ready; giving up"};
+            return Error{-ETIMEDOUT, "loadusr: waited " + std::to_string(limit.count()) +
+                                         " s for component '" + name + "' to become ready; " +
+                                         "'" + program + "' " + stop_child(pid)};
         std::this_thread::sleep_for(poll_interval);
     }
 }
@@ -230,11 +272,26 @@ Result<void> cmd_loadusr(Session& s, Args args)
         return flags.error();
     std::vector<std::string> argv(args.begin() + static_cast<long>(flags->program), args.end());
     remove_dead_user_components();       // a crashed instance's name may be reused
+    std::chrono::seconds limit{0};
+    if (flags->wait_ready) {
+        auto l = ready_limit();
+        if (!l)
+            return l.error();
+        limit = *l;
+        // The new program could not register this name anyway, and an existing ready
+        // component would end the wait at once: refuse before starting anything.
+        hal_comp_info c;
+        if (hal_find_comp(flags->wait_name.c_str(), &c) == 0)
+            return Error{-EEXIST, "loadusr: a component named '" + flags->wait_name + "' exists already" +
+                                      (c.is_realtime ? std::string(" (realtime)")
+                                                     : " (pid " + std::to_string(c.pid) + ")") +
+                                      "; unload it first, or wait for another name with -Wn NAME"};
+    }
     auto pid = spawn(argv);
     if (!pid)
         return pid.error();
     if (flags->wait_ready) {
-        if (auto r = wait_until_ready(*pid, argv[0], flags->wait_name); !r)
+        if (auto r = wait_until_ready(*pid, argv[0], flags->wait_name, limit); !r)
             return r;
     }
     if (flags->wait_exit) {

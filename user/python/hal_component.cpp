@@ -104,7 +104,8 @@ std::shared_ptr<ItemData> Component::add_item(const std::string& name, int type,
     // As in LinuxCNC's HAL: a component's interface is fixed once it is ready.
     if (state_->ready)
         throw HalError(std::string(kind) + " '" + full + "': component '" + state_->name +
-                       "' is already ready; create pins and parameters before ready()");
+                       "' is already ready; create pins and parameters before ready(), "
+                       "or call unready() first");
     MessageCapture capture;
     void* storage = hal_malloc(8);   // a pin's data pointer, or a parameter's value
     if (!storage)
@@ -186,6 +187,18 @@ void Component::ready()
     state_->ready = true;
 }
 
+// LinuxCNC 2.9: not ready again, so that more pins and parameters may follow; ready()
+// then announces the new interface (loadusr -W, component_is_ready).
+void Component::unready()
+{
+    state_->check_alive();
+    MessageCapture capture;
+    int rc = hal_unready(state_->id);
+    if (rc < 0)
+        fail(capture, rc, "component '" + state_->name + "': unready failed");
+    state_->ready = false;
+}
+
 void Component::setprefix(const std::string& prefix)
 {
     state_->check_alive();
@@ -227,6 +240,7 @@ void register_component(pyb::module_& m)
         .def("getparam", &Component::getparam, pyb::arg("name"))
         .def("getpins", &Component::getpins, "dict of this component's pins by the names given to newpin")
         .def("ready", &Component::ready, "tell the HAL the component is ready (loadusr -W waits for this)")
+        .def("unready", &Component::unready, "make the component not ready again, to add pins and parameters")
         .def("exit", &Component::exit, "remove the component and its pins from the HAL")
         .def("setprefix", &Component::setprefix, pyb::arg("prefix"))
         .def("getprefix", &Component::getprefix)

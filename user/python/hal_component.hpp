@@ -72,6 +72,7 @@ public:
     pyb::object getparam(const std::string& name) const;
     pyb::dict getpins() const;
     void ready();
+    void unready();
     void exit() { state_->exit(); }
     void setprefix(const std::string& prefix);
     std::string getprefix() const { return state_->prefix; }

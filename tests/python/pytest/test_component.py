@@ -154,6 +154,22 @@ def test_no_pins_after_ready(make_comp, name):
         c.newparam("late", hal.HAL_FLOAT, hal.HAL_RW)
 
 
+def test_unready_allows_more_pins(make_comp, name):
+    c = make_comp(name)
+    c.newpin("first", hal.HAL_FLOAT, hal.HAL_IN)
+    c.ready()
+    c.unready()
+    assert not hal.component_is_ready(name)
+    c.newpin("second", hal.HAL_BIT, hal.HAL_OUT)
+    c.newparam("third", hal.HAL_S32, hal.HAL_RW)
+    c.ready()
+    assert hal.component_is_ready(name)
+    assert halcmd("-s", "show", "pin", name).split()[4::5] == [f"{name}.first", f"{name}.second"]
+    c.exit()
+    with pytest.raises(hal.error, match="has exited"):
+        c.unready()
+
+
 def test_unknown_names_raise_attribute_error(make_comp, name):
     c = make_comp(name)
     c.newpin("pin", hal.HAL_BIT, hal.HAL_IN)

@@ -1,5 +1,7 @@
 # A script (not a component) that wires and inspects the HAL with the hal module's
 # functions, then tries what must be refused, printing each exception's class.
+import os
+
 import hal
 
 
@@ -11,7 +13,10 @@ def attempt(what, fn, *args):
         print(f"{what}: {type(e).__module__}.{type(e).__name__}: {e}")
 
 
-print("flags:", hal.is_sim, hal.is_rt, hal.is_userspace, hal.is_kernelspace)
+# is_sim/is_kernelspace tell the flavor the HAL runs in (the runner's HAL_TEST_FLAVOR)
+kernel = os.environ.get("HAL_TEST_FLAVOR") == "kernel"
+print("flags match the flavor:",
+      (hal.is_sim, hal.is_userspace, hal.is_kernelspace) == (not kernel, not kernel, kernel))
 hal.new_sig("x", hal.HAL_FLOAT)
 hal.connect("abs.0.in", "x")
 hal.set_s("x", "-2.5")

@@ -152,6 +152,35 @@ TEST(StepgenPulses, ReversalWaitsForDirholdThenDirsetup)
     EXPECT_EQ(g.p.rawcount, 0);
 }
 
+TEST(StepgenPulses, DirFollowsTheRateSoTheFirstReverseStepIsNotDelayed)
+{
+    Gen g(0);  // dirsetup 1, dirhold 1
+    std::vector<int> step, dir;
+    for (int i = 0; i < 7; i++) {
+        g.step(-0.25);  // backward at a quarter step per period from the start
+        step.push_back(g.p.out[0]);
+        dir.push_back(g.p.out[1]);
+    }
+    // dir turns in period 0, when the rate goes negative; the accumulator crosses the
+    // half-step point in period 2 and the step comes in that period, as in LinuxCNC
+    // (it used to wait for dirsetup from there: period 3)
+    EXPECT_EQ(dir, (std::vector<int>{1, 1, 1, 1, 1, 1, 1}));
+    EXPECT_EQ(step, (std::vector<int>{0, 0, 1, 0, 0, 0, 1}));
+    EXPECT_EQ(g.p.rawcount, -2);
+}
+
+TEST(StepgenPulses, DirDoesNotTurnEarlyWhileAStepIsDue)
+{
+    Gen g(0);
+    g.t = {3, 3, 1, 1, 0};  // 6 periods per step
+    EXPECT_EQ(g.step(0.5), 1);   // forward step; the next forward one is held
+    EXPECT_EQ(g.step(1.0), 0);   // due now, held by steplen + stepspace
+    for (int i = 0; i < 3; i++) {
+        g.step(-0.1);            // the rate reverses while the forward step is due
+        EXPECT_FALSE(g.p.out[1]) << "period " << i;
+    }
+}
+
 TEST(StepgenPulses, TimingLimitsHoldThePositionWithinOneStep)
 {
     Gen g(0);
