@@ -195,17 +195,18 @@ static void integrate(struct sim_pluto *p, long long now)
 	}
 }
 
+/* The design runs on its own clock whether or not the cycle gets through. */
 static int answering(struct sim_pluto *p)
 {
 	long long now;
 
-	if (!*p->configured || *p->epp_timeout)
+	if (!*p->configured)
 		return 0;
 	now = rtapi_get_time();
 	watchdog(p, now);
 	if (p->design == SIM_PLUTO_STEP)
 		integrate(p, now);
-	return 1;
+	return !*p->epp_timeout;
 }
 
 int sim_pluto_epp_addr(struct sim_pluto *p, unsigned char addr)
