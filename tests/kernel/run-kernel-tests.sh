@@ -3,8 +3,7 @@
 # linux-headers-<ver>-amd64 and static halcmd/halrun/halsampler/halstreamer/
 # emc_module_helper (build/static), packs them with busybox, the HAL-level tests
 # (tests/*/*/) and tests/kernel/cases into an initramfs, boots /boot/vmlinuz-<ver>
-# in qemu (TCG, no KVM needed; an LPT at 0x378 and a second 16550 at 0x2f8 that Linux
-# leaves alone for cases/40-qemu-ports.sh), runs the cases inside (10-hal-suite runs the whole
+# in qemu (TCG, no KVM needed), runs the cases inside (10-hal-suite runs the whole
 # HAL-level suite in the kernel flavor) and reports from the serial console.
 # Usage: run-kernel-tests.sh [KERNEL_RELEASE...]   (default: newest installed non-rt
 #        -amd64; e.g. 6.1.0-56-rt-amd64 for the PREEMPT_RT kernel). Several kernels
@@ -125,8 +124,7 @@ echo "== booting $kver in qemu (TCG)"
 log=$out/console.log
 timeout "$timeout_s" qemu-system-x86_64 -machine q35 -accel tcg -cpu max -m 768 -smp 2 \
 	-nographic -no-reboot -kernel "/boot/vmlinuz-$kver" -initrd "$out/initramfs.cpio.gz" \
-	-parallel null -serial mon:stdio -serial null \
-	-append "console=ttyS0 edd=off panic=-1 oops=panic rdinit=/init loglevel=4 8250.nr_uarts=1" \
+	-append "console=ttyS0 edd=off panic=-1 oops=panic rdinit=/init loglevel=4" \
 	</dev/null >"$log" 2>&1 || true
 tr -d '\r' <"$log" >"$log.txt"
 

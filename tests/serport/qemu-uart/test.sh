@@ -1,4 +1,4 @@
-# Kernel flavor in qemu, as root (run by tests/kernel/cases/40-qemu-ports.sh, not by
+# Kernel flavor in qemu, as root (run by tests/kernel/qemu-ports.sh, not by
 # the HAL suite: it needs qemu's second 16550 at 0x2f8, left alone by Linux through
 # 8250.nr_uarts=1, and /dev/port). serport claims 0x2f8-0x2fe from the kernel; its
 # write puts DTR in MCR and Break in LCR, read back from the UART; qemu's idle modem

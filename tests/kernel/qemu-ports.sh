@@ -1,6 +1,10 @@
-# hal_parport and serport against the devices qemu emulates (run-kernel-tests.sh
-# gives the VM a parallel port at 0x378 and a second 16550 at 0x2f8 that Linux leaves
-# alone: 8250.nr_uarts=1; parport_pc is not loaded). The tests live with their
+# hal_parport and serport against the devices qemu emulates: a parallel port at 0x378
+# and a second 16550 at 0x2f8 that Linux leaves alone (qemu -parallel null -serial
+# mon:stdio -serial null, kernel 8250.nr_uarts=1; parport_pc is not loaded).
+# NOT YET RUN: with those options in run-kernel-tests.sh the VM printed nothing after
+# "Booting from ROM" for 7 minutes (issue 13 session; cause not found: the next step
+# is a boot with loglevel=8 to see where it stops). Once the VM boots with the devices,
+# move this file to cases/40-qemu-ports.sh. The tests live with their
 # components (tests/hal_parport/qemu-lpt, tests/serport/qemu-uart) but need those
 # devices and, for the UART's loopback mode, /dev/port: they run here, as root, not in
 # the HAL suite (skip-flavor-* there).
