@@ -22,7 +22,7 @@ fb0=$(halcmd getp pluto-step.stepgen.0.position-fb)
 steps0=$(halcmd getp sim-parport.0.pluto.stepgen.0.steps)
 counts0=$(halcmd getp pluto-step.stepgen.0.counts)
 near fb0-cmd0 "$(awk "BEGIN { print $fb0 - $cmd0 }")" -600 600
-near counts0-steps0 "$((counts0 - steps0))" -1 1
+near counts0-steps0 "$((counts0 - steps0))" -20 20	# the write comes later than the read
 fb1=$(halcmd getp pluto-step.stepgen.1.position-fb)
 cmd1=$(halcmd getp pluto-step.stepgen.1.position-cmd)
 near fb1-cmd1 "$(awk "BEGIN { print $fb1 - $cmd1 }")" -300 300
