@@ -22,6 +22,11 @@ mkdir -p /home/haluser
 done) &
 chown 0:990 /bin/emc_module_helper && chmod 4750 /bin/emc_module_helper
 chmod 1777 /tmp
+# The kernel's firmware search path gets a directory every test may write: drivers
+# that upload FPGA images (pluto_servo, pluto_step) read test-made dummies from there
+# (tests/helpers/pluto-firmware.sh).
+mkdir -p /tmp/hal-firmware && chmod 1777 /tmp/hal-firmware
+printf /tmp/hal-firmware >/sys/module/firmware_class/parameters/path
 chown -R 1000:1000 /home/haluser /tests/hal
 echo
 pass=0 fail=0

@@ -12,11 +12,17 @@
  *     status-reads, control-reads, epp-cycles) and showing the last data, control
  *     and ecr values written.
  * EPP cycles reach a 256-byte register file: an address cycle sets the pointer, each
- * data cycle reads or writes the register there and advances it. */
+ * data cycle reads or writes the register there and advances it. With board=B for
+ * the port they reach a device on the cable instead: B = pluto_servo or pluto_step,
+ * a Pluto-P board (sim_pluto.c) configured through the port and answering that
+ * design's register map; B = none, nothing connected. A cycle nobody answers sets
+ * the EPP timeout flag, status bit 0, until a status write with bit 0 set clears it. */
 #include "rtapi.h"
 #include "rtapi_app.h"
 #include "rtapi_iosim.h"
+#include "rtapi_string.h"
 #include "hal.h"
+#include "sim_pluto.h"
 
 MODULE_LICENSE("GPL");
 MODULE_DESCRIPTION("simulated PC parallel port");
@@ -24,6 +30,11 @@ MODULE_DESCRIPTION("simulated PC parallel port");
 #define SIM_MAX 4
 static int io[SIM_MAX];
 RTAPI_MP_ARRAY_INT(io, SIM_MAX, "base addresses of the simulated ports");
+static char *board[SIM_MAX];
+RTAPI_MP_ARRAY_STRING(board, SIM_MAX, "device on each port's cable: none, pluto_servo, "
+		      "pluto_step (default: an EPP register file)");
+
+enum cable { CABLE_REGFILE, CABLE_NONE, CABLE_PLUTO };
 
 static const int status_pin[5] = { 15, 13, 12, 10, 11 };	/* status bits 3..7 */
 static const int control_pin[4] = { 1, 14, 16, 17 };		/* control bits 0..3 */
@@ -36,6 +47,9 @@ struct sim_pp {			/* HAL memory; touched only by port accesses */
 	hal_u32_t *epp_cycles, *data, *control, *ecr;
 	unsigned char data_reg, control_reg, ecr_reg, epp_addr;
 	unsigned char epp_mem[256];
+	enum cable cable;
+	struct sim_pluto *pluto;	/* CABLE_PLUTO */
+	int epp_timeout;		/* status bit 0 */
 	int handle_lo, handle_hi;
 	char name[24];
 };
@@ -62,7 +76,7 @@ static unsigned char status_byte(struct sim_pp *s)
 
 	for (i = 0; i < 5; i++)
 		b |= (unsigned char)(*s->status_ext[i] & 1) << (i + 3);
-	return b ^ 0x80;	/* Busy is inverted */
+	return (b ^ 0x80) | (s->epp_timeout ? 0x01 : 0);	/* Busy is inverted */
 }
 
 static unsigned char lo_inb(void *dev, unsigned int off)
@@ -88,11 +102,32 @@ static unsigned char lo_inb(void *dev, unsigned int off)
 		return (s->control_reg & 0xf0) | (b ^ 0x0b);
 	case 3:
 		++*s->epp_cycles;
+		if (s->cable != CABLE_REGFILE) {	/* address reads: unused by the Pluto */
+			s->epp_timeout = 1;
+			return 0xff;
+		}
 		return s->epp_addr;
 	default:
 		++*s->epp_cycles;
-		return s->epp_mem[s->epp_addr++];
+		if (s->cable == CABLE_REGFILE)
+			return s->epp_mem[s->epp_addr++];
+		if (s->cable == CABLE_NONE || sim_pluto_epp_read(s->pluto, &b) < 0) {
+			s->epp_timeout = 1;
+			return 0xff;
+		}
+		return b;
 	}
+}
+
+/* An EPP write cycle to a device on the cable. */
+static void cable_write(struct sim_pp *s, int addr_cycle, unsigned char b)
+{
+	int rc = -1;
+
+	if (s->cable == CABLE_PLUTO)
+		rc = addr_cycle ? sim_pluto_epp_addr(s->pluto, b) : sim_pluto_epp_write(s->pluto, b);
+	if (rc < 0)
+		s->epp_timeout = 1;
 }
 
 static void lo_outb(void *dev, unsigned int off, unsigned char b)
@@ -105,8 +140,10 @@ static void lo_outb(void *dev, unsigned int off, unsigned char b)
 		s->data_reg = b;
 		*s->data = b;
 		break;
-	case 1:
-		break;		/* status is read-only */
+	case 1:			/* status is read-only but for the timeout flag */
+		if (b & 0x01)
+			s->epp_timeout = 0;
+		break;
 	case 2:
 		++*s->control_writes;
 		s->control_reg = b;
@@ -114,14 +151,22 @@ static void lo_outb(void *dev, unsigned int off, unsigned char b)
 		break;
 	case 3:
 		++*s->epp_cycles;
-		s->epp_addr = b;
+		if (s->cable == CABLE_REGFILE)
+			s->epp_addr = b;
+		else
+			cable_write(s, 1, b);
 		break;
 	default:
 		++*s->epp_cycles;
-		s->epp_mem[s->epp_addr++] = b;
+		if (s->cable == CABLE_REGFILE)
+			s->epp_mem[s->epp_addr++] = b;
+		else
+			cable_write(s, 0, b);
 		break;
 	}
 	update_levels(s);
+	if (s->cable == CABLE_PLUTO && off <= 2)
+		sim_pluto_spp(s->pluto, s->data_reg, s->control_reg);
 }
 
 static unsigned char hi_inb(void *dev, unsigned int off)
@@ -179,6 +224,11 @@ static int export_sim(struct sim_pp *s, int n)
 	if (!err) err = export_u32(&s->data, n, "data");
 	if (!err) err = export_u32(&s->control, n, "control");
 	if (!err) err = export_u32(&s->ecr, n, "ecr");
+	if (!err && s->cable == CABLE_PLUTO) {
+		s->pluto = sim_pluto_new(comp_id, n, !strcmp(board[n], "pluto_step") ?
+					 SIM_PLUTO_STEP : SIM_PLUTO_SERVO);
+		err = s->pluto ? 0 : -ENOMEM;
+	}
 	if (err)
 		return err;
 	s->control_reg = 0x0c;	/* after power-up: nInit high, nSelectIn low */
@@ -213,6 +263,18 @@ int rtapi_app_main(void)
 		rtapi_print_msg(RTAPI_MSG_ERR, "sim_parport: give the ports' addresses: io=0x...\n");
 		return -EINVAL;
 	}
+	for (n = 0; n < SIM_MAX; n++) {
+		if (!board[n] || !*board[n])
+			continue;
+		if (n >= num || (strcmp(board[n], "none") &&
+				 strcmp(board[n], "pluto_servo") &&
+				 strcmp(board[n], "pluto_step"))) {
+			rtapi_print_msg(RTAPI_MSG_ERR, "sim_parport: board=%s (entry %d): must be "
+					"none, pluto_servo or pluto_step, for a port given in io=\n",
+					board[n], n + 1);
+			return -EINVAL;
+		}
+	}
 	comp_id = hal_init("sim_parport");
 	if (comp_id < 0)
 		return comp_id;
@@ -229,6 +291,10 @@ int rtapi_app_main(void)
 		struct sim_pp *s = &sims[n];
 
 		rtapi_snprintf(s->name, sizeof(s->name), "sim-parport.%d", n);
+		s->cable = !board[n] || !*board[n] ? CABLE_REGFILE :
+			   !strcmp(board[n], "none") ? CABLE_NONE : CABLE_PLUTO;
+		s->pluto = 0;
+		s->epp_timeout = 0;
 		err = export_sim(s, n);
 		if (!err) {
 			s->handle_lo = rtapi_iosim_register(io[n], 8, &lo_ops, s, s->name);
