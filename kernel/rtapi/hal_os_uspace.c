@@ -32,9 +32,39 @@ int hal_os_self(char *name, int len)
 	return (int)getpid();
 }
 
+/* A zombie (exited, not yet reaped) still answers kill(pid, 0); its parent may never
+ * reap it (a userspace component that halcmd started is reparented to init, and some
+ * init processes of containers never reap), so the state in /proc decides. The kernel
+ * flavor's check treats an exiting task the same way (hal_lib_kmod.c). */
+static bool pid_is_zombie(int pid)
+{
+	char path[32], buf[512], *close_paren;
+	ssize_t n;
+	int fd;
+
+	snprintf(path, sizeof(path), "/proc/%d/stat", pid);
+	fd = open(path, O_RDONLY | O_CLOEXEC);
+	if (fd < 0)
+		return false;	/* no /proc: kill() alone decides */
+	n = read(fd, buf, sizeof(buf) - 1);
+	close(fd);
+	if (n <= 0)
+		return false;
+	buf[n] = 0;
+	/* "PID (COMM) S ...": COMM may hold spaces and parentheses, the last ')' ends it */
+	close_paren = strrchr(buf, ')');
+	if (!close_paren || close_paren[1] != ' ')
+		return false;
+	return close_paren[2] == 'Z' || close_paren[2] == 'X';
+}
+
 bool hal_os_pid_alive(int pid)
 {
-	return kill((pid_t)pid, 0) == 0 || errno == EPERM;
+	if (pid <= 0)
+		return false;
+	if (kill((pid_t)pid, 0) != 0 && errno != EPERM)
+		return false;
+	return !pid_is_zombie(pid);
 }
 
 /* rtapi_app unloads a module only after hal_exit_module_comps() took its functions

@@ -26,6 +26,8 @@ check "hal group exists" getent group hal
 check "emc_module_helper is 4750 root:hal" sh -c '[ "$(stat -c %a:%U:%G /usr/bin/emc_module_helper)" = 4750:root:hal ]'
 check "realtime limits for group hal" grep -q "^@hal.*rtprio" /etc/security/limits.d/hal.conf
 check "udev rule for /dev/rtapi" grep -q 'KERNEL=="rtapi".*GROUP="hal", MODE="0660"' /lib/udev/rules.d/60-hal.rules
+check "udev rules for hal_input and shuttlexpress" sh -c 'grep -q "ID_INPUT_JOYSTICK.*GROUP=\"plugdev\"" /usr/lib/udev/rules.d/60-hal-input.rules &&
+	grep -q "idVendor}==\"0b33\".*MODE=\"0444\"" /usr/lib/udev/rules.d/60-hal-shuttlexpress.rules'
 check "a man page for every program" sh -c '
 	for p in $(dpkg -L hal hal-dev | grep "^/usr/bin/"); do
 		n=${p##*/}; ls /usr/share/man/man1/$n.1* >/dev/null 2>&1 || { echo "no page for $n"; exit 1; }

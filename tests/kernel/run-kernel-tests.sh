@@ -28,10 +28,15 @@ build_static() {
 	{ cmake -S "$root" -B "$static" -DCMAKE_BUILD_TYPE=Release -DCMAKE_EXE_LINKER_FLAGS=-static \
 		-DCMAKE_CXX_FLAGS=-Wno-error=restrict \
 		"-DREADLINE_LIBRARY=/usr/lib/$libdir/libreadline.a;/usr/lib/$libdir/libtinfo.a" \
-		-DHAL_KMOD_INSTALL_DIR=$vm_moddir -DCMAKE_INSTALL_PREFIX=/usr &&
+		-DHAL_KMOD_INSTALL_DIR=$vm_moddir -DCMAKE_INSTALL_PREFIX=/usr -DHAL_HALMETER_GTK=OFF &&
 	  cmake --build "$static" -j"$(nproc)" --target halcmd halrun realtime halsampler halstreamer emc_module_helper \
 		thread_cost ${KTEST_PYTHON:+pyhal}
 	} >"$static.log" 2>&1 || { cat "$static.log" >&2; exit 1; }
+	# userspace components for tests/usercomp, halmeter, shuttlexpress (halmeter without
+	# GTK, which cannot link statically; hal_input and gs2_vfd need libudev/libmodbus,
+	# which Debian has only as shared libraries: their tests are host-only)
+	cmake --build "$static" -j"$(nproc)" --target hal_testcomp halmeter shuttlexpress >>"$static.log" 2>&1 ||
+		{ cat "$static.log" >&2; exit 1; }
 }
 
 if [ $# -gt 1 ]; then
@@ -85,6 +90,9 @@ for ko in $(find "$out/modules" -name '*.ko'); do
 	strip --strip-debug -o "$ird$vm_moddir/$kver/${ko##*/}" "$ko"
 done
 for tool in halcmd halrun realtime halsampler halstreamer emc_module_helper; do
+	strip -o "$ird/bin/$tool" "$static/bin/$tool"
+done
+for tool in hal_testcomp halmeter shuttlexpress; do
 	strip -o "$ird/bin/$tool" "$static/bin/$tool"
 done
 # the HAL-level tests: every tests/<component>/<case>/ (not unit/, not kernel/), or

@@ -12,15 +12,15 @@ Status decode_status(const uint16_t (&r)[status_count])
     s.status1 = r[st_status1];
     s.status2 = r[st_status2];
     s.firmware = r[st_firmware];
-    s.freq_cmd = r[st_freq_cmd] * 0.1;
-    s.freq_out = r[st_freq_out] * 0.1;
-    s.current = r[st_current] * 0.1;
-    s.dc_bus = r[st_dc_bus] * 0.1;
-    s.volts_out = r[st_volts_out] * 0.1;
+    s.freq_cmd = r[st_freq_cmd] / 10.0;   // 0.1 units; "/ 10" gives the nearest double (230.1, not 230.10000000000002)
+    s.freq_out = r[st_freq_out] / 10.0;
+    s.current = r[st_current] / 10.0;
+    s.dc_bus = r[st_dc_bus] / 10.0;
+    s.volts_out = r[st_volts_out] / 10.0;
     s.rpm = r[st_rpm];
     s.scale_freq = static_cast<double>((static_cast<uint32_t>(r[st_scale_hi]) << 16) | r[st_scale_lo]);
-    s.power_factor = r[st_power_factor] * 0.1;
-    s.load = r[st_load] * 0.1;
+    s.power_factor = r[st_power_factor] / 10.0;
+    s.load = r[st_load] / 10.0;
     s.is_stopped = r[st_freq_out] == 0;
     return s;
 }

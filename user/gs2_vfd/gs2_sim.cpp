@@ -65,6 +65,39 @@ void model(modbus_mapping_t* m)
     r[status_base + st_freq_out] = r[reg_run] ? r[reg_speed] : 0;
 }
 
+int drop_requests = 0;                    // "drop N": requests still to be ignored
+
+// One stdin command (see the top of the file); false for "quit" or when a new
+// pseudo-terminal cannot be made.
+bool run_command(const std::string& line, modbus_mapping_t* map, modbus_t* ctx, Pty& pty,
+                 const std::string& link)
+{
+    char cmd[32] = "";
+    long a = 0, b = 0;
+    int n = std::sscanf(line.c_str(), "%31s %li %li", cmd, &a, &b);
+    std::string c = cmd;
+    if (c == "quit")
+        return false;
+    if (c == "set" && n == 3 && a >= 0 && a < 0x2200) {
+        map->tab_registers[a] = static_cast<uint16_t>(b);
+    } else if (c == "drop" && n == 2) {
+        drop_requests = static_cast<int>(a);
+    } else if (c == "hangup") {
+        close_pty(pty);
+        if (!open_pty(link, pty)) {
+            std::fprintf(stderr, "gs2_sim: cannot make a pseudo-terminal at %s: %s\n", link.c_str(),
+                         std::strerror(errno));
+            return false;
+        }
+        modbus_set_socket(ctx, pty.master);
+    } else if (n > 0) {
+        std::fprintf(stderr, "gs2_sim: unknown command: %s\n", line.c_str());
+    }
+    std::printf("ok %s\n", cmd);
+    std::fflush(stdout);
+    return true;
+}
+
 }  // namespace
 
 int main(int argc, char** argv)
@@ -90,9 +123,8 @@ int main(int argc, char** argv)
     modbus_set_socket(ctx, pty.master);
     std::printf("ready\n");
     std::fflush(stdout);
-    int drop = 0;
     uint8_t query[MODBUS_RTU_MAX_ADU_LENGTH];
-    char line[256];
+    std::string pending;                  // stdin read so far, up to an incomplete line
     for (;;) {
         pollfd fds[2] = {{STDIN_FILENO, POLLIN, 0}, {pty.master, POLLIN, 0}};
         if (poll(fds, 2, -1) < 0) {
@@ -101,35 +133,32 @@ int main(int argc, char** argv)
             break;
         }
         if (fds[0].revents) {
-            if (!std::fgets(line, sizeof(line), stdin))
+            // Read what is there and run every whole line in it: a test sends several
+            // commands at once, and buffered stdio (fgets) would keep all but the first
+            // in its buffer, out of poll()'s sight, until more input came.
+            char buf[512];
+            ssize_t got = read(STDIN_FILENO, buf, sizeof(buf));
+            if (got < 0 && errno == EINTR)
+                continue;
+            if (got <= 0)
                 break;
-            char cmd[32] = "";
-            long a = 0, b = 0;
-            int n = std::sscanf(line, "%31s %li %li", cmd, &a, &b);
-            std::string c = cmd;
-            if (c == "quit")
-                break;
-            if (c == "set" && n == 3 && a >= 0 && a < 0x2200) {
-                map->tab_registers[a] = static_cast<uint16_t>(b);
-            } else if (c == "drop" && n == 2) {
-                drop = static_cast<int>(a);
-            } else if (c == "hangup") {
-                close_pty(pty);
-                if (!open_pty(link, pty))
-                    return 1;
-                modbus_set_socket(ctx, pty.master);
-            } else if (n > 0) {
-                std::fprintf(stderr, "gs2_sim: unknown command: %s", line);
+            pending.append(buf, static_cast<size_t>(got));
+            bool quit = false;
+            for (size_t nl; !quit && (nl = pending.find('\n')) != std::string::npos;) {
+                std::string line = pending.substr(0, nl);
+                pending.erase(0, nl + 1);
+                quit = !run_command(line, map, ctx, pty, link);
             }
-            std::printf("ok %s\n", cmd);
-            std::fflush(stdout);
+            if (quit)
+                break;
+            continue;                     // poll again: "hangup" may have replaced pty.master
         }
         if (fds[1].revents & POLLIN) {
             int rc = modbus_receive(ctx, query);
             if (rc <= 0)
                 continue;                 // not for us, or a broken frame: the master times out
-            if (drop > 0) {
-                drop--;
+            if (drop_requests > 0) {
+                drop_requests--;
                 continue;
             }
             modbus_reply(ctx, query, rc, map);

@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // hal_input(1): Linux input devices as HAL pins. Finds each inputspec's device through
-// libudev, makes its pins (component "input", pins input.N.*), then about every 10 ms
+// libudev, makes its pins (component "hal_input", pins input.N.*), then about every 10 ms
 // moves events into pins and LED pins out to the device until SIGTERM/SIGINT.
 #include <signal.h>
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstring>
 #include <memory>
 #include <vector>
 
@@ -24,6 +25,11 @@ void on_signal(int) { stop_requested = 1; }
 int main(int argc, char** argv)
 {
     using namespace hal::input;
+    for (int i = 1; i < argc; i++)
+        if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0) {
+            std::fputs(input_usage, stdout);
+            return 0;
+        }
     auto specs = parse_input_args(std::span<char* const>(argv, static_cast<size_t>(argc)));
     if (!specs) {
         std::fprintf(stderr, "hal_input: %s\n%s", specs.error().message.c_str(), input_usage);
@@ -44,7 +50,9 @@ int main(int argc, char** argv)
     sa.sa_handler = on_signal;
     sigaction(SIGTERM, &sa, nullptr);
     sigaction(SIGINT, &sa, nullptr);
-    int id = hal_init("input");
+    // "hal_input", the program's name: what "loadusr -W hal_input" in users' files
+    // waits for (the pins are input.N.* all the same)
+    int id = hal_init("hal_input");
     if (id < 0)
         return 1;
     std::vector<std::unique_ptr<InputDevice>> devices;

@@ -12,6 +12,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
+#include <string>
 #include <thread>
 
 #include "commands.hpp"
@@ -30,9 +32,22 @@ constexpr auto ready_timeout = 20s;      // loadusr -W: generous for slow (sanit
 constexpr auto kill_grace = 2s;          // loadusr -W timed out: SIGTERM, then SIGKILL
 constexpr auto exit_timeout = 10s;       // unloadusr: SIGTERM to gone
 
+// A zombie has exited: it answers kill(pid, 0) until its parent reaps it, and the
+// parent of a component whose halcmd has exited is init, which may never reap it (some
+// containers' init processes do not). /proc says which it is.
 bool process_alive(int pid)
 {
-    return pid > 0 && (kill(pid, 0) == 0 || errno == EPERM);
+    if (pid <= 0 || (kill(pid, 0) != 0 && errno != EPERM))
+        return false;
+    std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+    std::string line;
+    if (!std::getline(stat, line))
+        return true;                         // no /proc: kill() alone decides
+    size_t close_paren = line.rfind(')');    // "PID (COMM) STATE ...": COMM may hold ')'
+    if (close_paren == std::string::npos || close_paren + 2 >= line.size())
+        return true;
+    char state = line[close_paren + 2];
+    return state != 'Z' && state != 'X';
 }
 
 // Userspace components matching name ("all": every one).
@@ -319,8 +334,10 @@ Result<void> unload_user_components(Session* s, const std::string& name)
     for (const hal_comp_info& c : comps) {
         if (c.pid == self)
             continue;
-        hal_comp_info now;
-        while (hal_find_comp(c.name, &now) == 0 && now.id == c.id && process_alive(c.pid)) {
+        // Gone means the process has ended, not only its hal_exit(): a script that
+        // runs unloadusr and then starts the program again must not meet the old one.
+        // (Our own component, halcmd itself, only has to leave the HAL.)
+        while (process_alive(c.pid)) {
             waitpid(c.pid, nullptr, WNOHANG);        // reap our own children (loadusr)
             if (std::chrono::steady_clock::now() > deadline)
                 return Error{-ETIMEDOUT, "unloadusr: component '" + std::string(c.name) + "' (pid " +

@@ -3,14 +3,32 @@
 #include "meter_source.hpp"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdlib>
 
+#include "hal/kmod.hpp"
 #include "hal_query.h"
+#include "rtapi_client.hpp"
 #include "values.hpp"
 
 namespace hal::meter {
 
+// hal_attach() makes the HAL when none exists (a new segment in the simulated
+// flavor; hal_lib.ko loaded in the kernel flavor): an observer must first see that
+// a session runs, or it would leave a HAL of its own behind.
 Result<void> attach_hal()
 {
+    auto flavor = kmod::detect_flavor();
+    if (!flavor)
+        return Error{flavor.error().code, flavor.error().message};
+    setenv("HAL_FLAVOR", kmod::flavor_name(flavor->flavor), 1);   // the ULAPI library follows it
+    bool running = flavor->flavor == kmod::Flavor::kmod ? kmod::module_loaded("hal_lib") : rtapi_running();
+    if (!running)
+        return Error{-ENOENT, std::string("no HAL session is running (") + kmod::flavor_name(flavor->flavor) +
+                                  " flavor" + (flavor->flavor == kmod::Flavor::kmod ? "" :
+                                  ", RTAPI_INSTANCE=" + std::string(std::getenv("RTAPI_INSTANCE") ?
+                                  std::getenv("RTAPI_INSTANCE") : "0")) +
+                                  "): start one with halrun or halcmd first"};
     int rc = hal_attach();
     if (rc < 0)
         return Error{rc, "cannot attach to the HAL (is a HAL session running?)"};

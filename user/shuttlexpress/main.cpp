@@ -94,10 +94,20 @@ void apply(Shuttle& s, const uint8_t (&raw)[report_size])
     *s.pins->spring_f = r.spring / 7.0;
 }
 
+constexpr const char* usage =
+    "usage: shuttlexpress [DEVICE ...]\n"
+    "  DEVICE: a /dev/hidrawN to use; without any, every /dev/hidraw* that is a\n"
+    "          ShuttleXpress (USB 0b33:0020) is used. Pins: shuttlexpress.N.*\n";
+
 }  // namespace
 
 int main(int argc, char** argv)
 {
+    for (int i = 1; i < argc; i++)
+        if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0) {
+            std::fputs(usage, stdout);
+            return 0;
+        }
     std::vector<std::string> paths;
     bool named = argc > 1;
     for (int i = 1; i < argc; i++)

@@ -46,7 +46,7 @@ echo "drop 3" >&3
 wait_pin spindle.error-count 3
 wait_for "$T/gs2.err" "answers again" || exit 1
 echo "retval $(halcmd getp spindle.retval)"
-cat "$T/gs2.err"
+sed "s|$T|T|g" "$T/gs2.err"
 # the cable is pulled and put back
 echo "hangup" >&3
 i=0; while [ "$(halcmd getp spindle.error-count)" = 3 ] && [ $i -lt 400 ]; do i=$((i + 1)); sleep 0.05; done
