@@ -12,7 +12,7 @@
 
 int main()
 {
-    static unsigned long long sink[1024];
+    std::vector<unsigned long long> sink(1024);
     std::vector<double> runs;
     for (int r = 0; r < 21; r++) {
         unsigned long long a = __rdtsc();
@@ -22,7 +22,7 @@ int main()
         runs.push_back(double(b - a) / 100000);
     }
     std::sort(runs.begin(), runs.end());
-    std::printf("%.1f\n", runs[runs.size() / 2]);
+    std::printf("%.1f\n", runs[runs.size() / 2] + double(sink[0] & 0) );
     return 0;
 }
 #else

@@ -9,6 +9,17 @@
 #include "hal_internal.h"
 
 #ifdef RTAPI
+/* rtapi_get_clocks() inline: on x86 it is the TSC in both flavors (get_cycles() in
+ * the kernel), and the call to it cost a tenth of the time of a small function. */
+static inline long long thread_clocks(void)
+{
+#if defined(__x86_64__) || defined(__i386__)
+	return (long long)__builtin_ia32_rdtsc();
+#else
+	return rtapi_get_clocks();
+#endif
+}
+
 /* One cycle: every function of the dispatch table, in order. One clock read between
  * two functions (the end of one is the start of the next); the table is contiguous;
  * nothing here is a locked instruction or writes a line that configuring processes
@@ -20,7 +31,7 @@ static void run_functions(struct hal_thread_rec *t, struct hal_thread_rt *rt)
 	rtapi_u32 i, n = d ? __atomic_load_n(&d->count, __ATOMIC_ACQUIRE) : 0;
 	long period = (long)t->period_ns;
 	long long t0 = rtapi_get_time();
-	long long start = rtapi_get_clocks(), prev = start, now;
+	long long start = thread_clocks(), prev = start, now;
 	rtapi_s32 dt;
 
 	for (i = 0; i < n; i++) {
@@ -28,7 +39,7 @@ static void run_functions(struct hal_thread_rec *t, struct hal_thread_rt *rt)
 		struct hal_funct_rec *f = (struct hal_funct_rec *)(hal_shmem_base + sl->funct_off);
 
 		((hal_funct_t)(unsigned long)sl->funct)((void *)(unsigned long)sl->arg, period);
-		now = rtapi_get_clocks();
+		now = thread_clocks();
 		dt = (rtapi_s32)(now - prev);
 		*f->time_ptr = dt;
 		if (dt > f->tmax)
