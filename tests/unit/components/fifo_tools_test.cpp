@@ -2,7 +2,9 @@
 // halsampler/halstreamer: option parsing, output format (RULINGS.md), input lines.
 #include <gtest/gtest.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <limits>
@@ -286,4 +288,36 @@ TEST(HalsamplerFormat, IntegersAreByteForBytePrintf)
     rec[4].s = 0;
     rec[5].u = 2;  // any nonzero bit prints 1
     EXPECT_EQ(hal::format_sample("susb", rec, true), "-2147483648 -2147483648 4294967295 0 1 \n");
+}
+
+TEST(HalstreamerLine, FastAndSlowParsingAgreeWithStrtod)
+{
+    // Spellings from_chars takes and those left to strtod/strtoll, all as before issue 20.
+    const char* floats[] = {"0", "-0", "0.000000", "1", "-1.5", "3.14159265358979", "1e10", "-2E-3",
+                            "0.1", "1.7976931348623157e308", "2.2250738585072014e-308",
+                            "123456789012345678901234567890", ".5", "5.", "+2.5", "0x1p3", "inf",
+                            "-Infinity", "nan", "1e-320"};
+    for (const char* f : floats) {
+        auto v = hal::parse_stream_line("f", f);
+        char* end = nullptr;
+        errno = 0;
+        double want = std::strtod(f, &end);
+        bool ok = *end == 0 && errno != ERANGE;
+        ASSERT_EQ(static_cast<bool>(v), ok) << f;
+        if (ok && !std::isnan(want)) {
+            EXPECT_EQ(std::memcmp(&(*v)[0].f, &want, sizeof(want)), 0) << f;
+        }
+    }
+    for (const char* f : {"1e400", "-1e400", "1.5x", "--1", "1e", "e5"})
+        EXPECT_FALSE(hal::parse_stream_line("f", f)) << f;
+    EXPECT_EQ((*hal::parse_stream_line("s", "+7"))[0].s, 7);
+    EXPECT_EQ((*hal::parse_stream_line("s", "-2147483648"))[0].s, INT32_MIN);
+    EXPECT_FALSE(hal::parse_stream_line("s", "2147483648"));
+    EXPECT_EQ((*hal::parse_stream_line("u", "4294967295"))[0].u, UINT32_MAX);
+    EXPECT_FALSE(hal::parse_stream_line("u", "4294967296"));
+    EXPECT_FALSE(hal::parse_stream_line("u", "-1"));
+    EXPECT_EQ((*hal::parse_stream_line("L", "-9223372036854775808"))[0].s, INT64_MIN);
+    EXPECT_FALSE(hal::parse_stream_line("L", "9223372036854775808"));
+    EXPECT_EQ((*hal::parse_stream_line("K", "18446744073709551615"))[0].u, UINT64_MAX);
+    EXPECT_FALSE(hal::parse_stream_line("K", "18446744073709551616"));
 }
