@@ -169,6 +169,8 @@ int hal_dispatch_append(struct hal_thread_rec *t);
 /* After entries were removed: rebuild, or, when the heap has no room for a new table,
  * rewrite the old one in place while the thread runs nothing. Cannot fail. */
 void hal_dispatch_shrink(struct hal_thread_rec *t);
+/* Every table rebuilt from its list: after recovering the mutex from a dead holder. */
+void hal_dispatch_repair(void);
 /* Wait until no thread can still use what was unpublished before the call (removed
  * functions, replaced dispatch tables), then free and release it. */
 void hal_threads_quiesce(void);

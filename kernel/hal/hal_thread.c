@@ -284,6 +284,28 @@ void hal_dispatch_shrink(struct hal_thread_rec *t)
 	__atomic_store_n(&d->count, i, __ATOMIC_RELEASE);
 }
 
+/* After the HAL mutex was taken over from a dead process (hal_lock.c), which may have
+ * died between changing a thread's entry list and its dispatch table: count every
+ * list again and rebuild every table from it, then free what was retired. */
+void hal_dispatch_repair(void)
+{
+	struct hal_obj_hdr *o;
+
+	for (o = hal_first(HAL_KIND_THREAD); o; o = hal_next(o)) {
+		struct hal_thread_rec *t = (struct hal_thread_rec *)o;
+		rtapi_u32 off, n = 0, last = 0;
+
+		for (off = t->first_entry_off; off; off = ((struct hal_entry_rec *)hal_ptr(off))->next_off) {
+			n++;
+			last = off;
+		}
+		t->entry_count = n;
+		t->last_entry_off = last;
+		hal_dispatch_shrink(t);	/* a rebuild, or in place when the heap is full */
+	}
+	hal_threads_quiesce();
+}
+
 #ifdef RTAPI
 /* The thread's per-period state, at the first cache line boundary of its block, so
  * that nothing else shares its line. Its offset, not the block's, goes in rt_off. */
