@@ -217,7 +217,9 @@ struct hal_thread_rt {
 	rtapi_u64 cycles;	/* completed cycles that ran the functions */
 	rtapi_u64 run_ns;	/* time spent in functions */
 	rtapi_u64 overruns;	/* periods missed since creation */
-	rtapi_u64 pad2[3];
+	rtapi_s32 host_pid;	/* simulated flavor: rtapi_app, whose death ends the thread; kernel: 0 */
+	rtapi_u32 pad3;
+	rtapi_u64 pad2[2];
 };
 _Static_assert(sizeof(struct hal_thread_rt) == HAL_CACHE_LINE, "segment layout changed: bump HAL_LAYOUT_VERSION");
 

@@ -247,6 +247,8 @@ static void wait_for_thread(struct hal_thread_rec *t, bool stopped)
 		return;
 	p0 = __atomic_load_n(&rt->periods, __ATOMIC_ACQUIRE);
 	for (waited = 1;; waited++) {
+		if (rt->host_pid && !hal_os_pid_alive(rt->host_pid))
+			return;	/* its host died: the thread runs no more (halrun -U cleans up) */
 		p = __atomic_load_n(&rt->periods, __ATOMIC_ACQUIRE);
 		if (stopped && __atomic_load_n(&rt->idle_period, __ATOMIC_RELAXED) == p)
 			return;
@@ -322,6 +324,13 @@ static struct hal_thread_rt *thread_rt_new(struct hal_thread_rec *t)
 	rt = hal_ptr(off);
 	rt->idle_period = ~0u;	/* no period has passed: not known to be idle */
 	rt->block_off = hal_off(block);
+#ifndef __KERNEL__
+	{
+		char name[16];
+
+		rt->host_pid = hal_os_self(name, sizeof(name));	/* this is rtapi_app */
+	}
+#endif
 	t->rt_off = off;
 	return rt;
 }
