@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-2.0-or-later
-# make bench: the three figures of the foundation issue, from the standard
-# workloads of bench/gen-workload.sh. Prints numbers; never fails on them.
+# make bench: the hot-path figures of issue 20 with their targets (bench/issue20.sh:
+# dispatch, halsampler, halcmd start-up, load 64000; BENCH_RUNS runs each, default 5),
+# then the three figures of the foundation issue, from the standard workloads of
+# bench/gen-workload.sh. Prints numbers; never fails on them.
 #   (a) halrun -f wall time for the load workload at N = 1000, 4000, 16000 + growth exponent
 #   (b) per-function cost (ns) for the funct workload at N = 1000
 #   (c) samples/s halsampler drains from the sample workload with 8 channels, + overruns
 #   then stepgen figures, hostmot2 read/write cost on the simulated board, thread wake-up latency (simulated flavor) and the kernel
 #   flavor's figures from inside qemu (emulated: behaviour, not speed)
-# BENCH_QUICK=1: small workloads, no latency or qemu part (the fresh-clone test
+# BENCH_QUICK=1: small workloads, no issue 20, latency or qemu part (the fresh-clone test
 # checks with it that the benchmark runs from a clone; its figures mean little).
 set -u
 build=$(cd "${1:-build}" && pwd)
@@ -28,6 +30,10 @@ trap 'halrun -U >/dev/null 2>&1; rm -rf "$tmp"' EXIT
 
 now() { date +%s.%N; }
 calc() { awk "BEGIN { print $* }"; }
+
+if [ "$quick" != 1 ]; then
+	"$here/issue20.sh" "$build" "${BENCH_RUNS:-5}"
+fi
 
 echo "== (a) config load: halrun -f of the 'load' workload"
 declare -A secs

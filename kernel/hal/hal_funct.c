@@ -102,11 +102,11 @@ void hal_funct_delete_locked(struct hal_funct_rec *f)
 }
 
 /* Unlink from thread 't' every entry whose function is 'f' or, with f NULL, is
- * owned by component 'owner_off'. One pass; count and tail are rebuilt on the way.
- * The caller quiesces before the freed entries can be reused. */
+ * owned by component 'owner_off'. One pass; count and tail are rebuilt on the way,
+ * then the dispatch table. The caller quiesces (the old table, module references). */
 static void remove_entries(struct hal_thread_rec *t, struct hal_funct_rec *f, rtapi_u32 owner_off)
 {
-	rtapi_u32 *link = &t->first_entry_off;
+	rtapi_u32 *link = &t->first_entry_off, before = t->entry_count;
 
 	t->entry_count = 0;
 	t->last_entry_off = 0;
@@ -125,6 +125,8 @@ static void remove_entries(struct hal_thread_rec *t, struct hal_funct_rec *f, rt
 			link = &e->next_off;
 		}
 	}
+	if (t->entry_count != before)
+		hal_dispatch_shrink(t);
 }
 
 void hal_funct_remove_from_threads(struct hal_funct_rec *f)
@@ -141,6 +143,22 @@ void hal_comp_functs_remove_from_threads(rtapi_u32 comp_off)
 
 	for (o = hal_first(HAL_KIND_THREAD); o; o = hal_next(o))
 		remove_entries((struct hal_thread_rec *)o, 0, comp_off);
+}
+
+/* Take entry 'e' out of the list of 't' and free it (not yet in any dispatch table). */
+static void unlink_entry(struct hal_thread_rec *t, struct hal_entry_rec *e)
+{
+	rtapi_u32 *link = &t->first_entry_off, prev = 0;
+
+	while (*link && *link != hal_off(e)) {
+		prev = *link;
+		link = &((struct hal_entry_rec *)hal_ptr(*link))->next_off;
+	}
+	*link = e->next_off;
+	if (t->last_entry_off == hal_off(e))
+		t->last_entry_off = prev;
+	t->entry_count--;
+	hal_free_block(hal_seg, e);
 }
 
 int hal_add_funct_locked(const char *funct_name, const char *thread_name, int position)
@@ -206,10 +224,21 @@ int hal_add_funct_locked(const char *funct_name, const char *thread_name, int po
 	}
 	e->funct_off = hal_off(f);
 	e->next_off = *link;
-	__atomic_store_n(link, hal_off(e), __ATOMIC_RELEASE);	/* publish last */
+	*link = hal_off(e);
 	if (e->next_off == 0)
 		t->last_entry_off = hal_off(e);
 	t->entry_count++;
+	/* The thread runs the dispatch table, not the list: addf takes effect here. */
+	err = e->next_off == 0 ? hal_dispatch_append(t) : hal_dispatch_rebuild(t);
+	if (err) {
+		unlink_entry(t, e);
+		hal_os_code_put(f->module);
+		rtapi_print_msg(RTAPI_MSG_ERR, "HAL shared memory is full: cannot add '%s' to '%s'\n",
+				funct_name, thread_name);
+		return err;
+	}
+	if (t->retired_off)
+		hal_threads_quiesce();	/* the replaced table */
 	f->users++;
 	return 0;
 }
@@ -253,14 +282,15 @@ int hal_del_funct_locked(const char *funct_name, const char *thread_name)
 		struct hal_entry_rec *e = hal_ptr(*link);
 
 		if (e->funct_off == hal_off(f)) {
-			__atomic_store_n(link, e->next_off, __ATOMIC_RELEASE);
+			*link = e->next_off;
 			if (t->last_entry_off == hal_off(e))
 				t->last_entry_off = prev;
 			t->entry_count--;
 			f->users--;
 			f->puts_pending++;
-			hal_threads_quiesce();	/* then its module may go */
-			hal_free_block(hal_seg, e);
+			hal_free_block(hal_seg, e);	/* the thread reads the table, not entries */
+			hal_dispatch_shrink(t);
+			hal_threads_quiesce();	/* then the old table and the module may go */
 			return 0;
 		}
 		prev = *link;

@@ -160,7 +160,19 @@ void hal_thread_delete_locked(struct hal_thread_rec *t);
 void hal_funct_remove_from_threads(struct hal_funct_rec *f);
 /* Remove every entry of every function component 'comp_off' owns: one pass per thread. */
 void hal_comp_functs_remove_from_threads(rtapi_u32 comp_off);
-/* Wait (bounded) until no thread is in the middle of running its functions. */
+/* Make a thread's dispatch table match its entry list after a change (hal_thread.c):
+ * rebuild publishes a new table and retires the old one (freed by hal_threads_quiesce,
+ * which the caller runs before returning); append adds the last entry, in place when
+ * there is room. 0 or -ENOMEM. */
+int hal_dispatch_rebuild(struct hal_thread_rec *t);
+int hal_dispatch_append(struct hal_thread_rec *t);
+/* After entries were removed: rebuild, or, when the heap has no room for a new table,
+ * rewrite the old one in place while the thread runs nothing. Cannot fail. */
+void hal_dispatch_shrink(struct hal_thread_rec *t);
+/* Every table rebuilt from its list: after recovering the mutex from a dead holder. */
+void hal_dispatch_repair(void);
+/* Wait until no thread can still use what was unpublished before the call (removed
+ * functions, replaced dispatch tables), then free and release it. */
 void hal_threads_quiesce(void);
 
 /* --- configuration requests (hal_request.c, hal_request_ul.c) --- */

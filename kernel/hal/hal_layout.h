@@ -12,10 +12,16 @@
 
 #define HAL_KEY 0x48414c32		/* "HAL2": RTAPI shmem key of the segment */
 #define HAL_SEGMENT_SIZE (64u << 20)	/* sparse in userspace; holds ~100k pins */
-#define HAL_LAYOUT_VERSION 5
+#define HAL_LAYOUT_VERSION 6
 #define HAL_SEG_MAGIC 0x48414c21
 #define HAL_HASH_BUCKETS 65536u		/* power of two */
 #define HAL_ALIGN 8u
+#define HAL_CACHE_LINE 64u		/* what a realtime thread writes sits alone in lines of this size */
+#ifdef __cplusplus
+#define HAL_LINE_ALIGNED alignas(HAL_CACHE_LINE)
+#else
+#define HAL_LINE_ALIGNED _Alignas(HAL_CACHE_LINE)
+#endif
 /* Where the value area starts in a segment of 'size' bytes: its last quarter, page
  * aligned, so that the kernel flavor maps it apart from the records (hal_layout.h). */
 #define HAL_VAL_START(size) (((size) - (size) / 4) & ~4095u)
@@ -39,6 +45,8 @@ enum hal_kind {
 	HAL_KIND_UMALLOC,			/* hal_malloc() of a userspace component: its
 						 * record (struct hal_umalloc_rec) is in the
 						 * record heap, the memory in the value area */
+	HAL_KIND_DISPATCH,			/* struct hal_dispatch: a thread's functions */
+	HAL_KIND_THREAD_RT,			/* struct hal_thread_rt, with alignment room */
 };
 
 /* hal_obj_hdr.flags: set on alias records, which sit in the name index under the
@@ -175,25 +183,64 @@ struct hal_entry_rec {
 	rtapi_u32 funct_off;
 };
 
+/* One function of a thread's dispatch table: the code and argument (copied from the
+ * function record, they never change) and the record, whose time_ptr and tmax take
+ * the timing. */
+struct hal_dispatch_slot {
+	rtapi_u64 funct;
+	rtapi_u64 arg;
+	rtapi_u32 funct_off;
+	rtapi_u32 pad;
+};
+_Static_assert(sizeof(struct hal_dispatch_slot) == 24, "segment layout changed: bump HAL_LAYOUT_VERSION");
+
+/* What the thread runs each cycle (HAL_KIND_DISPATCH block): its entry list as one
+ * array, so a cycle reads contiguous memory instead of following links (issue 20).
+ * Rebuilt by the HAL core from the list on every change (hal_thread.c): appending
+ * fills the next free slot and then publishes 'count' (release); anything else builds
+ * a new table, publishes its offset, and frees the old one once the thread has passed
+ * a period boundary (hal_threads_quiesce). */
+struct hal_dispatch {
+	rtapi_u32 count;	/* slots the thread runs: stored (release) after the slot */
+	rtapi_u32 capacity;
+	struct hal_dispatch_slot slot[];
+};
+
+/* What the thread writes every period, alone in its cache line (a HAL_KIND_THREAD_RT
+ * block holds it at the first line boundary), so configuring processes writing records
+ * nearby never take the line away from it. Written by the thread only. */
+struct hal_thread_rt {
+	rtapi_u32 periods;	/* periods completed, with or without running functions */
+	rtapi_u32 idle_period;	/* 'periods' after the last period that ran no functions */
+	rtapi_s32 tmax;		/* param <name>.tmax (written by users too) */
+	rtapi_u32 block_off;	/* the HAL_KIND_THREAD_RT block this sits in */
+	rtapi_u64 cycles;	/* completed cycles that ran the functions */
+	rtapi_u64 run_ns;	/* time spent in functions */
+	rtapi_u64 overruns;	/* periods missed since creation */
+	rtapi_s32 host_pid;	/* simulated flavor: rtapi_app, whose death ends the thread; kernel: 0 */
+	rtapi_u32 pad3;
+	rtapi_u64 pad2[2];
+};
+_Static_assert(sizeof(struct hal_thread_rt) == HAL_CACHE_LINE, "segment layout changed: bump HAL_LAYOUT_VERSION");
+
 struct hal_thread_rec {
 	struct hal_obj_hdr hdr;
 	rtapi_s64 period_ns;
 	rtapi_s32 priority;
 	rtapi_s32 task_id;	/* RTAPI task running hal_thread_task() */
-	rtapi_u32 first_entry_off;/* functions in execution order */
-	rtapi_u32 cycle_seq;	/* odd while functions run: hal_thread_quiesce() waits on it */
+	rtapi_u32 first_entry_off;/* functions in execution order (show, save, positions) */
+	rtapi_u32 dispatch_off;	/* struct hal_dispatch built from them: what the thread runs */
 	hal_s32_t *time_ptr;	/* pin <name>.time */
-	rtapi_s32 tmax;		/* param <name>.tmax */
+	rtapi_u32 rt_off;	/* struct hal_thread_rt */
 	rtapi_u8 uses_fp;
 	rtapi_u8 pad[3];
 	rtapi_u32 entry_count;	/* functions on it; with last_entry_off, appending is O(1) */
 	rtapi_u32 last_entry_off;
-	rtapi_u64 cycles;	/* completed cycles: written by the thread only */
-	rtapi_u64 run_ns;	/* time spent in functions: written by the thread only */
-	rtapi_u64 overruns;	/* periods missed since creation: written by the thread only */
 	hal_s32_t *overruns_ptr;/* pin <name>.overruns (saturates), for a watchdog */
+	rtapi_u32 retired_off;	/* a replaced dispatch table, freed by hal_threads_quiesce() */
+	rtapi_u32 pad2;
 };
-_Static_assert(sizeof(struct hal_thread_rec) == 168, "segment layout changed: bump HAL_LAYOUT_VERSION");
+_Static_assert(sizeof(struct hal_thread_rec) == 152, "segment layout changed: bump HAL_LAYOUT_VERSION");
 
 /* The segment starts with this header. */
 struct hal_seg_hdr {
@@ -205,7 +252,7 @@ struct hal_seg_hdr {
 	rtapi_s32 mutex_pid;	/* holder of 'mutex' (hal_lock.c), 0 = none or not yet known */
 	char mutex_holder[16];	/* its process name, for messages */
 	rtapi_u32 lock_level;	/* HAL_LOCK_* bits */
-	rtapi_u32 threads_running;
+	rtapi_u32 pad_r;
 	rtapi_s32 next_comp_id;
 	rtapi_u32 hash_off;	/* HAL_HASH_BUCKETS u32 offsets */
 	rtapi_s64 base_period_ns;/* set by the first thread */
@@ -228,6 +275,10 @@ struct hal_seg_hdr {
 	rtapi_u32 alias_count;
 	rtapi_u32 exact_periods;/* halcmd setexact_for_test_suite_only: take periods as asked */
 	rtapi_u32 pad2;
+	/* Read by every thread every period: in a line no request writes (the mutex and
+	 * the allocator's fields above change with each one). */
+	HAL_LINE_ALIGNED rtapi_u32 threads_running;
+	rtapi_u32 pad_running[HAL_CACHE_LINE / 4 - 1];
 };
 
 #endif /* HAL_LAYOUT_H */

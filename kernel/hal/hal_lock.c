@@ -95,10 +95,13 @@ void hal_lock_seg(struct hal_seg_hdr *seg)
 		}
 		rtapi_sleep_ns(200000);
 	}
-	if (dead)
+	if (dead) {
 		rtapi_print_msg(RTAPI_MSG_ERR,
 				"HAL: the HAL mutex was held by pid %d (%s), which is gone: recovered\n",
 				dead, old_name);
+		if (seg == hal_seg && seg->init_state == 2)
+			hal_dispatch_repair();	/* it may have died inside addf/delf */
+	}
 }
 
 void hal_lock(void)

@@ -147,6 +147,7 @@ static void funct_info(const struct hal_funct_rec *f, struct hal_funct_info *out
 static void thread_info(struct hal_thread_rec *t, struct hal_thread_info *out)
 {
 	char time_pin[HAL_NAME_LEN + 8];
+	const struct hal_thread_rt *rt;
 	struct hal_pin_rec *pin;
 	int id;
 
@@ -160,10 +161,11 @@ static void thread_info(struct hal_thread_rec *t, struct hal_thread_info *out)
 	pin = hal_find(HAL_KIND_PIN, time_pin);
 	if (pin)	/* time_ptr is the owner's pointer: read through the pin record */
 		out->time = hal_pin_value(pin)->s;
-	out->tmax = t->tmax;
-	out->cycles = rtapi_load_u64(&t->cycles);
-	out->cpu_ns = rtapi_load_u64(&t->run_ns);
-	out->overruns = (long long)rtapi_load_u64(&t->overruns);
+	rt = hal_ptr(t->rt_off);
+	out->tmax = rt ? rt->tmax : 0;
+	out->cycles = rt ? rtapi_load_u64(&rt->cycles) : 0;
+	out->cpu_ns = rt ? rtapi_load_u64(&rt->run_ns) : 0;
+	out->overruns = rt ? (long long)rtapi_load_u64(&rt->overruns) : 0;
 }
 
 /* Each query walks one kind list under the lock; the callbacks copy and return. */

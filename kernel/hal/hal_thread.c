@@ -9,79 +9,85 @@
 #include "hal_internal.h"
 
 #ifdef RTAPI
-/* A record offset the thread follows: inside the record heap, which only the HAL core
- * writes (users map it read-only in the kernel flavor). Checked anyway, every time. */
-static bool record_ok(rtapi_u32 off, rtapi_u32 len)
+/* rtapi_get_clocks() inline: on x86 it is the TSC in both flavors (get_cycles() in
+ * the kernel), and the call to it cost a tenth of the time of a small function. */
+static inline long long thread_clocks(void)
 {
-	return off >= hal_seg->heap_start && off < hal_seg->val_start && len <= hal_seg->val_start - off;
+#if defined(__x86_64__) || defined(__i386__)
+	return (long long)__builtin_ia32_rdtsc();
+#else
+	return rtapi_get_clocks();
+#endif
 }
 
-static void run_functions(struct hal_thread_rec *t)
+/* One cycle: every function of the dispatch table, in order. One clock read between
+ * two functions (the end of one is the start of the next); the table is contiguous;
+ * nothing here is a locked instruction or writes a line that configuring processes
+ * write (issue 20). The table and its count are only ever published by the HAL core
+ * with release stores after they are complete (hal_dispatch_append/rebuild). */
+static void run_functions(struct hal_thread_rec *t, struct hal_thread_rt *rt)
 {
-	long long start = rtapi_get_clocks(), prev = start, now;
+	const struct hal_dispatch *d = hal_ptr(__atomic_load_n(&t->dispatch_off, __ATOMIC_ACQUIRE));
+	rtapi_u32 i, n = d ? __atomic_load_n(&d->count, __ATOMIC_ACQUIRE) : 0;
+	long period = (long)t->period_ns;
 	long long t0 = rtapi_get_time();
-	rtapi_u32 off;
+	long long start = thread_clocks(), prev = start, now;
+	rtapi_s32 dt;
 
-	/* Odd while running. Marked before reading the list (full barrier), so
-	 * hal_threads_quiesce() after unlinking an entry either sees us running or
-	 * we see the list without it. */
-	__atomic_add_fetch(&t->cycle_seq, 1, __ATOMIC_SEQ_CST);
-	off = __atomic_load_n(&t->first_entry_off, __ATOMIC_SEQ_CST);
-	while (off) {
-		struct hal_entry_rec *e;
-		struct hal_funct_rec *f;
-		hal_funct_t fn;
+	for (i = 0; i < n; i++) {
+		const struct hal_dispatch_slot *sl = &d->slot[i];
+		struct hal_funct_rec *f = (struct hal_funct_rec *)(hal_shmem_base + sl->funct_off);
 
-		if (!record_ok(off, sizeof(*e)))
-			break;
-		e = hal_ptr(off);
-		if (!record_ok(e->funct_off, sizeof(*f)))
-			break;
-		f = hal_ptr(e->funct_off);
-		fn = (hal_funct_t)(unsigned long)f->funct;
-
-		fn((void *)(unsigned long)f->arg, (long)t->period_ns);
-		now = rtapi_get_clocks();
-		*f->time_ptr = (rtapi_s32)(now - prev);
-		if (*f->time_ptr > f->tmax)
-			f->tmax = *f->time_ptr;
+		((hal_funct_t)(unsigned long)sl->funct)((void *)(unsigned long)sl->arg, period);
+		now = thread_clocks();
+		dt = (rtapi_s32)(now - prev);
+		*f->time_ptr = dt;
+		if (dt > f->tmax)
+			f->tmax = dt;
 		prev = now;
-		off = __atomic_load_n(&e->next_off, __ATOMIC_ACQUIRE);
 	}
-	*t->time_ptr = (rtapi_s32)(prev - start);
-	if (*t->time_ptr > t->tmax)
-		t->tmax = *t->time_ptr;
-	rtapi_store_u64(&t->run_ns, t->run_ns + (rtapi_u64)(rtapi_get_time() - t0));
-	rtapi_store_u64(&t->cycles, t->cycles + 1);
-	__atomic_add_fetch(&t->cycle_seq, 1, __ATOMIC_ACQ_REL);	/* even: idle */
+	dt = (rtapi_s32)(prev - start);
+	*t->time_ptr = dt;
+	if (dt > rt->tmax)
+		rt->tmax = dt;
+	rtapi_store_u64(&rt->run_ns, rt->run_ns + (rtapi_u64)(rtapi_get_time() - t0));
+	rtapi_store_u64(&rt->cycles, rt->cycles + 1);
 }
 
 /* Publish the periods the task missed (counted by RTAPI in rtapi_task_wait()) in the
  * record, for "show thread" and the host's warnings, and on the pin, for a watchdog. */
-static void note_overruns(struct hal_thread_rec *t)
+static void note_overruns(struct hal_thread_rec *t, struct hal_thread_rt *rt)
 {
 	long long n = rtapi_task_overruns(t->task_id);
 
-	if (n <= 0 || (rtapi_u64)n == t->overruns)
+	if (n <= 0 || (rtapi_u64)n == rt->overruns)
 		return;
-	rtapi_store_u64(&t->overruns, (rtapi_u64)n);
+	rtapi_store_u64(&rt->overruns, (rtapi_u64)n);
 	*t->overruns_ptr = n > 0x7fffffffLL ? 0x7fffffff : (hal_s32_t)n;
 }
 
+/* Each period ends with a release store of 'periods': everything the thread read
+ * during the period (the dispatch table above all) is behind it. wait_for_thread()
+ * builds on that instead of the thread announcing cycles with locked instructions. */
 static void hal_thread_task(void *arg)
 {
 	struct hal_thread_rec *t = arg;
+	struct hal_thread_rt *rt = hal_ptr(t->rt_off);
 
 	for (;;) {
+		rtapi_u32 done = rt->periods + 1;
 		int running = __atomic_load_n(&hal_seg->threads_running, __ATOMIC_ACQUIRE);
 
 #ifndef __KERNEL__
 		running = rtapi_task_lockstep_gate(running);	/* exact periods: "start" in step */
 #endif
 		if (running)
-			run_functions(t);
+			run_functions(t, rt);
+		else
+			__atomic_store_n(&rt->idle_period, done, __ATOMIC_RELAXED);
+		__atomic_store_n(&rt->periods, done, __ATOMIC_RELEASE);
 		rtapi_task_wait();
-		note_overruns(t);
+		note_overruns(t, rt);
 	}
 }
 
@@ -159,9 +165,183 @@ static void overruns_pin_delete(const char *name)
 		hal_pin_delete_locked(pin);
 }
 
+static void thread_rt_free(struct hal_thread_rec *t)
+{
+	struct hal_thread_rt *rt = hal_ptr(t->rt_off);
+
+	if (rt)
+		hal_free_block(hal_seg, hal_ptr(rt->block_off));
+	t->rt_off = 0;
+}
+
+/* --- dispatch tables (struct hal_dispatch, hal_layout.h) --- */
+
+static void slot_fill(struct hal_dispatch_slot *sl, rtapi_u32 funct_off)
+{
+	const struct hal_funct_rec *f = hal_ptr(funct_off);
+
+	sl->funct = f->funct;
+	sl->arg = f->arg;
+	sl->funct_off = funct_off;
+	sl->pad = 0;
+}
+
+/* A new table holding the entry list of 't', published; the old one waits in
+ * retired_off for hal_threads_quiesce(), which the caller must call before the
+ * thread's table changes again. 0 or -ENOMEM (nothing changed). */
+int hal_dispatch_rebuild(struct hal_thread_rec *t)
+{
+	rtapi_u32 n = t->entry_count, cap = n + n / 2 + 8, i = 0, off;
+	struct hal_dispatch *d;
+
+	if (t->retired_off)
+		hal_threads_quiesce();	/* one old table at a time */
+	if (n == 0) {		/* no functions, no table */
+		t->retired_off = t->dispatch_off;
+		__atomic_store_n(&t->dispatch_off, 0, __ATOMIC_RELEASE);
+		return 0;
+	}
+	d = hal_alloc_block(hal_seg, sizeof(*d) + cap * (rtapi_u32)sizeof(d->slot[0]),
+			    HAL_KIND_DISPATCH, 0);
+	if (!d)
+		return -ENOMEM;
+	d->capacity = cap;
+	for (off = t->first_entry_off; off && i < cap; i++) {
+		const struct hal_entry_rec *e = hal_ptr(off);
+
+		slot_fill(&d->slot[i], e->funct_off);
+		off = e->next_off;
+	}
+	d->count = i;
+	t->retired_off = t->dispatch_off;
+	__atomic_store_n(&t->dispatch_off, hal_off(d), __ATOMIC_RELEASE);
+	return 0;
+}
+
+/* The function of the list's last entry, appended: in place when the table has room
+ * (the slot is written before the count that makes the thread read it), else in a
+ * new table with room to grow, so n appends cost O(n) in all. 0 or -ENOMEM. */
+int hal_dispatch_append(struct hal_thread_rec *t)
+{
+	struct hal_dispatch *d = hal_ptr(t->dispatch_off);
+	const struct hal_entry_rec *e = hal_ptr(t->last_entry_off);
+
+	if (!d || d->count + 1 != t->entry_count || d->count == d->capacity)
+		return hal_dispatch_rebuild(t);
+	slot_fill(&d->slot[d->count], e->funct_off);
+	__atomic_store_n(&d->count, d->count + 1, __ATOMIC_RELEASE);
+	return 0;
+}
+
+/* Has thread 't' passed a period boundary since everything published before this
+ * call? With threads stopped, a thread whose last period ran nothing has: it will
+ * read threads_running as 0 again (we hold the HAL mutex, nobody starts them), so it
+ * will not look at its table. Otherwise wait for two boundaries: the period that may
+ * have read the old table, and one begun after the new one was visible (a period
+ * starts after the thread's sleep, a full barrier in both flavors, but two cost only
+ * a period more). Never gives up, so nothing is freed under a thread; a thread stuck
+ * inside a function is named once a second. */
+static void wait_for_thread(struct hal_thread_rec *t, bool stopped)
+{
+	struct hal_thread_rt *rt = hal_ptr(t->rt_off);
+	rtapi_u32 p0, p;
+	int waited;
+
+	if (!rt)
+		return;
+	p0 = __atomic_load_n(&rt->periods, __ATOMIC_ACQUIRE);
+	for (waited = 1;; waited++) {
+		if (rt->host_pid && !hal_os_pid_alive(rt->host_pid))
+			return;	/* its host died: the thread runs no more (halrun -U cleans up) */
+		p = __atomic_load_n(&rt->periods, __ATOMIC_ACQUIRE);
+		if (stopped && __atomic_load_n(&rt->idle_period, __ATOMIC_RELAXED) == p)
+			return;
+		if (p - p0 >= 2)
+			return;
+		rtapi_sleep_ns(100000);
+		if (waited % 10000 == 0)
+			rtapi_print_msg(RTAPI_MSG_ERR,
+					"HAL: waited %d s for thread '%s' to finish a period\n",
+					waited / 10000, t->hdr.name);
+	}
+}
+
+void hal_dispatch_shrink(struct hal_thread_rec *t)
+{
+	struct hal_dispatch *d;
+	rtapi_u32 off, i = 0;
+
+	if (hal_dispatch_rebuild(t) == 0)
+		return;
+	d = hal_ptr(t->dispatch_off);	/* no retired table: rebuild quiesced first */
+	if (!d)
+		return;
+	rtapi_print_msg(RTAPI_MSG_WARN, "HAL shared memory is full: thread '%s' runs nothing "
+			"for a period while its functions are rearranged\n", t->hdr.name);
+	__atomic_store_n(&d->count, 0, __ATOMIC_RELEASE);
+	__atomic_thread_fence(__ATOMIC_SEQ_CST);
+	wait_for_thread(t, !__atomic_load_n(&hal_seg->threads_running, __ATOMIC_RELAXED));
+	for (off = t->first_entry_off; off && i < d->capacity; i++) {
+		const struct hal_entry_rec *e = hal_ptr(off);
+
+		slot_fill(&d->slot[i], e->funct_off);
+		off = e->next_off;
+	}
+	__atomic_store_n(&d->count, i, __ATOMIC_RELEASE);
+}
+
+/* After the HAL mutex was taken over from a dead process (hal_lock.c), which may have
+ * died between changing a thread's entry list and its dispatch table: count every
+ * list again and rebuild every table from it, then free what was retired. */
+void hal_dispatch_repair(void)
+{
+	struct hal_obj_hdr *o;
+
+	for (o = hal_first(HAL_KIND_THREAD); o; o = hal_next(o)) {
+		struct hal_thread_rec *t = (struct hal_thread_rec *)o;
+		rtapi_u32 off, n = 0, last = 0;
+
+		for (off = t->first_entry_off; off; off = ((struct hal_entry_rec *)hal_ptr(off))->next_off) {
+			n++;
+			last = off;
+		}
+		t->entry_count = n;
+		t->last_entry_off = last;
+		hal_dispatch_shrink(t);	/* a rebuild, or in place when the heap is full */
+	}
+	hal_threads_quiesce();
+}
+
 #ifdef RTAPI
+/* The thread's per-period state, at the first cache line boundary of its block, so
+ * that nothing else shares its line. Its offset, not the block's, goes in rt_off. */
+static struct hal_thread_rt *thread_rt_new(struct hal_thread_rec *t)
+{
+	char *block = hal_alloc_block(hal_seg, sizeof(struct hal_thread_rt) + HAL_CACHE_LINE,
+				      HAL_KIND_THREAD_RT, 0);
+	struct hal_thread_rt *rt;
+	rtapi_u32 off;
+
+	if (!block)
+		return 0;
+	off = (hal_off(block) + HAL_CACHE_LINE - 1) & ~(HAL_CACHE_LINE - 1);
+	rt = hal_ptr(off);
+	rt->idle_period = ~0u;	/* no period has passed: not known to be idle */
+	rt->block_off = hal_off(block);
+#ifndef __KERNEL__
+	{
+		char name[16];
+
+		rt->host_pid = hal_os_self(name, sizeof(name));	/* this is rtapi_app */
+	}
+#endif
+	t->rt_off = off;
+	return rt;
+}
+
 static int create_locked(const char *name, unsigned long period, int uses_fp)
 {
+	struct hal_thread_rt *rt;
 	struct hal_thread_rec *t;
 	long long actual;
 	int prio, i, err;
@@ -182,9 +362,15 @@ static int create_locked(const char *name, unsigned long period, int uses_fp)
 	t->period_ns = actual;
 	t->priority = prio;
 	t->uses_fp = uses_fp != 0;
-	err = hal_timing_objects_new(name, &t->time_ptr, &t->tmax, 0);
-	if (err)
+	rt = thread_rt_new(t);
+	if (!rt) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "HAL shared memory is full: cannot create thread '%s'\n", name);
+		err = -ENOMEM;
 		goto undo_record;
+	}
+	err = hal_timing_objects_new(name, &t->time_ptr, &rt->tmax, 0);
+	if (err)
+		goto undo_rt;
 	err = overruns_pin_new(name, t);
 	if (err)
 		goto undo_timing;
@@ -209,6 +395,8 @@ undo_task:
 undo_timing:
 	overruns_pin_delete(name);
 	hal_timing_objects_delete(name);
+undo_rt:
+	thread_rt_free(t);
 undo_record:
 	hal_object_delete(&t->hdr);
 	return err;
@@ -255,6 +443,12 @@ void hal_thread_delete_locked(struct hal_thread_rec *t)
 		hal_free_block(hal_seg, e);
 	}
 	t->first_entry_off = 0;
+	if (t->dispatch_off)
+		hal_free_block(hal_seg, hal_ptr(t->dispatch_off));
+	if (t->retired_off)
+		hal_free_block(hal_seg, hal_ptr(t->retired_off));
+	t->dispatch_off = t->retired_off = 0;
+	thread_rt_free(t);
 	overruns_pin_delete(t->hdr.name);
 	hal_timing_objects_delete(t->hdr.name);
 	hal_object_delete(&t->hdr);
@@ -311,7 +505,8 @@ int hal_thread_overruns(void (*cb)(const char *name, long long period_ns,
 	for (o = hal_first(HAL_KIND_THREAD); o; o = hal_next(o), n++) {
 		struct hal_thread_rec *t = (struct hal_thread_rec *)o;
 
-		cb(t->hdr.name, t->period_ns, rtapi_load_u64(&t->overruns), ctx);
+		cb(t->hdr.name, t->period_ns,
+		   rtapi_load_u64(&((struct hal_thread_rt *)hal_ptr(t->rt_off))->overruns), ctx);
 	}
 	hal_unlock();
 	return n;
@@ -373,30 +568,28 @@ int hal_stop_threads(void)
 	return set_running(0);
 }
 
-/* Wait until every thread that was running its functions has finished that cycle:
- * then no thread is inside a function whose entry was unlinked before the call, and
- * the module references of those entries are dropped (puts_pending). Never gives up,
- * so a module is never freed under a thread; a thread stuck inside a function is
- * named once a second. */
+/* Make what was unpublished safe to free: with threads running, wait until every
+ * thread whose dispatch table was replaced has passed a period boundary (then free
+ * the old table); with threads stopped (hal_set_running_locked(0) calls this right
+ * after), until every thread has had a period that ran nothing. Then no thread is
+ * inside a function whose entry was removed before the call, and the module
+ * references of those entries are dropped (puts_pending). */
 void hal_threads_quiesce(void)
 {
+	bool stopped = !__atomic_load_n(&hal_seg->threads_running, __ATOMIC_RELAXED);
 	struct hal_obj_hdr *o;
 
-	__atomic_thread_fence(__ATOMIC_SEQ_CST);	/* pairs with run_functions() */
+	/* Our stores (tables, threads_running) before our loads of 'periods'. The
+	 * configuring side's only full barrier; the threads need none. */
+	__atomic_thread_fence(__ATOMIC_SEQ_CST);
 	for (o = hal_first(HAL_KIND_THREAD); o; o = hal_next(o)) {
 		struct hal_thread_rec *t = (struct hal_thread_rec *)o;
-		rtapi_u32 seq = __atomic_load_n(&t->cycle_seq, __ATOMIC_ACQUIRE);
-		int waited;
 
-		for (waited = 1; seq & 1; waited++) {
-			rtapi_sleep_ns(100000);
-			if (__atomic_load_n(&t->cycle_seq, __ATOMIC_ACQUIRE) != seq)
-				break;
-			if (waited % 10000 == 0)
-				rtapi_print_msg(RTAPI_MSG_ERR,
-						"HAL: waited %d s for thread '%s' to leave its functions\n",
-						waited / 10000, t->hdr.name);
-		}
+		if (stopped || t->retired_off)
+			wait_for_thread(t, stopped);
+		if (t->retired_off)
+			hal_free_block(hal_seg, hal_ptr(t->retired_off));
+		t->retired_off = 0;
 	}
 	for (o = hal_first(HAL_KIND_FUNCT); o; o = hal_next(o)) {
 		struct hal_funct_rec *f = (struct hal_funct_rec *)o;

@@ -30,7 +30,7 @@ build_static() {
 		"-DREADLINE_LIBRARY=/usr/lib/$libdir/libreadline.a;/usr/lib/$libdir/libtinfo.a" \
 		-DHAL_KMOD_INSTALL_DIR=$vm_moddir -DCMAKE_INSTALL_PREFIX=/usr -DHAL_HALMETER_GTK=OFF &&
 	  cmake --build "$static" -j"$(nproc)" --target halcmd halrun realtime halsampler halstreamer emc_module_helper \
-		thread_cost ${KTEST_PYTHON:+pyhal}
+		thread_cost dispatch_cost ${KTEST_PYTHON:+pyhal}
 	} >"$static.log" 2>&1 || { cat "$static.log" >&2; exit 1; }
 	# userspace components for tests/usercomp, halmeter, shuttlexpress (halmeter without
 	# GTK, which cannot link statically; hal_input and gs2_vfd need libudev/libmodbus,
@@ -127,6 +127,7 @@ if [ -n "${KTEST_BENCH:-}" ]; then	# the standard workloads, generated here (bas
 	"$gen" funct 1000 >"$ird/bench/funct-1000.hal"
 	"$gen" sample 8 >"$ird/bench/sample-8.hal"
 	strip -o "$ird/bin/thread_cost" "$static/bin/thread_cost"
+	strip -o "$ird/bin/dispatch_cost" "$static/bin/dispatch_cost"
 fi
 chmod +x "$ird/init"
 # root's files, writable by root only, whoever builds: the helper uses only such modules

@@ -54,7 +54,7 @@ bool process_alive(int pid)
 std::vector<hal_comp_info> user_comps(const std::string& name)
 {
     std::vector<hal_comp_info> out;
-    for (const hal_comp_info& c : take_snapshot().comps)
+    for (const hal_comp_info& c : take_snapshot(snap_comps).comps)
         if (!c.is_realtime && (name == "all" || name == c.name))
             out.push_back(c);
     return out;

@@ -262,6 +262,21 @@ void list_names(const Snapshot& h, Item item, const Patterns& pats)
     std::printf("%s\n", line.c_str());
 }
 
+// What show/list ITEM reads: signals are printed with the pins on them.
+unsigned kinds_for(Item item)
+{
+    switch (item) {
+    case Item::comp: return snap_comps;
+    case Item::pin: return snap_pins;
+    case Item::param: return snap_params;
+    case Item::sig: return snap_sigs | snap_pins;
+    case Item::funct: return snap_functs;
+    case Item::thread: return snap_threads;
+    case Item::alias: return snap_aliases;
+    default: return snap_all;
+    }
+}
+
 }  // namespace
 
 Result<void> cmd_show(Session& s, Args args)
@@ -275,9 +290,13 @@ Result<void> cmd_show(Session& s, Args args)
         }
     }
     remove_dead_user_components();   // a crashed userspace component is not shown as if alive
-    Snapshot h = take_snapshot();
-    bool script = s.script_mode();
     bool all = item == Item::all;
+    bool script = s.script_mode();
+    // Unmatched names are dropped while reading, except where every row counts: the
+    // pins of a signal, and -s, whose owner column is as wide as the longest owner.
+    unsigned filtered = script || all || item == Item::sig ? 0u : kinds_for(item);
+    Snapshot h = take_snapshot(kinds_for(item), filtered,
+                               [&pats](std::string_view n) { return name_matches(pats, n); });
     if (all || item == Item::comp)
         show_comps(h, pats, script);
     if (all || item == Item::pin)
@@ -301,7 +320,7 @@ Result<void> cmd_list(Session&, Args args)
     if (!item || *item == Item::all)
         return Error{-EINVAL, "list: '" + args[0] + "' is not one of comp, pin, sig, param, funct, thread, alias"};
     Patterns pats(args.begin() + 1, args.end());
-    list_names(take_snapshot(), *item, pats);
+    list_names(take_snapshot(kinds_for(*item)), *item, pats);
     return ok();
 }
 

@@ -36,7 +36,7 @@ Result<void> link_pin(Session& s, const std::string& pin, const std::string& sig
 // The pin that drives sig (error messages only, so a snapshot is fine).
 std::string writer_of(const std::string& sig)
 {
-    for (const hal_pin_info& p : take_snapshot().pins)
+    for (const hal_pin_info& p : take_snapshot(snap_pins).pins)
         if (sig == p.signal && p.dir == HAL_OUT)
             return p.name;
     return "?";

@@ -55,7 +55,7 @@ int run_session(const HalrunOptions& opts)
         Session session(opts.halcmd);
         if (!session.start())
             return 1;
-        if (!take_snapshot().comps.empty()) {
+        if (!take_snapshot(snap_comps).comps.empty()) {
             refuse_second_session();
             return 1;                             // not ours: leave it running
         }

@@ -3,6 +3,8 @@
 #include "stream_parse.hpp"
 
 #include <cerrno>
+#include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 
@@ -17,9 +19,9 @@ bool is_space(char c)
     return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f';
 }
 
-std::vector<std::string> split_fields(std::string_view line)
+std::vector<std::string_view> split_fields(std::string_view line)
 {
-    std::vector<std::string> fields;
+    std::vector<std::string_view> fields;
     size_t i = 0;
     while (i < line.size()) {
         while (i < line.size() && is_space(line[i]))
@@ -43,6 +45,48 @@ const char* type_name(hal_fifo_type t)
     case HAL_FIFO_S64: return "s64";
     case HAL_FIFO_U64: return "u64";
     default: return "?";
+    }
+}
+
+// The common spellings, with std::from_chars (issue 20): a plain decimal number that
+// it takes whole and whose value strtod/strtoll would give too (a nonzero normal
+// double, an integer in range). Anything else (+, hex, inf, nan, underflow, errors)
+// is left to parse_value(), so what is accepted, and how, stays strtod's.
+bool parse_fast(hal_fifo_type t, std::string_view f, hal_fifo_value& v)
+{
+    const char* b = f.data();
+    const char* e = b + f.size();
+    if (f.empty() || !(f[0] == '-' || (f[0] >= '0' && f[0] <= '9')))
+        return false;
+    switch (t) {
+    case HAL_FIFO_FLOAT: {
+        double d;
+        auto r = std::from_chars(b, e, d, std::chars_format::fixed | std::chars_format::scientific);
+        if (r.ec != std::errc() || r.ptr != e || std::fpclassify(d) != FP_NORMAL)
+            return false;
+        v.f = d;
+        return true;
+    }
+    case HAL_FIFO_S32:
+    case HAL_FIFO_S64: {
+        long long s;
+        auto r = std::from_chars(b, e, s);
+        if (r.ec != std::errc() || r.ptr != e || (t == HAL_FIFO_S32 && (s < INT32_MIN || s > INT32_MAX)))
+            return false;
+        v.s = s;
+        return true;
+    }
+    case HAL_FIFO_U32:
+    case HAL_FIFO_U64: {
+        unsigned long long u;
+        auto r = std::from_chars(b, e, u);
+        if (r.ec != std::errc() || r.ptr != e || (t == HAL_FIFO_U32 && u > UINT32_MAX))
+            return false;
+        v.u = u;
+        return true;
+    }
+    default:
+        return false;
     }
 }
 
@@ -147,7 +191,7 @@ bool is_blank_line(std::string_view line)
 
 Result<std::vector<hal_fifo_value>> parse_stream_line(std::string_view cfg, std::string_view line)
 {
-    std::vector<std::string> fields = split_fields(line);
+    std::vector<std::string_view> fields = split_fields(line);
     // LinuxCNC's halstreamer reads the fields it needs and ignores the rest (a trailing
     // "# comment", extra columns); too few is an error.
     if (fields.size() < cfg.size())
@@ -156,8 +200,11 @@ Result<std::vector<hal_fifo_value>> parse_stream_line(std::string_view cfg, std:
     std::vector<hal_fifo_value> values(cfg.size());
     for (size_t m = 0; m < cfg.size(); m++) {
         hal_fifo_type t = hal_fifo_type_of(cfg[m]);
-        if (!parse_value(t, fields[m], values[m]))
-            return Error{-EINVAL, "value " + std::to_string(m + 1) + " '" + fields[m] +
+        if (parse_fast(t, fields[m], values[m]))
+            continue;
+        std::string field(fields[m]);
+        if (!parse_value(t, field, values[m]))
+            return Error{-EINVAL, "value " + std::to_string(m + 1) + " '" + field +
                                       "' is not a valid " + type_name(t)};
     }
     return values;

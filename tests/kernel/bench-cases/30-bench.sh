@@ -12,6 +12,8 @@ done
 halcmd -f /bench/funct-1000.hal >/tmp/funct.out 2>&1 || echo "BENCH funct setup failed: $(tail -n 1 /tmp/funct.out)"
 sleep 1
 echo "BENCH funct N=1000: $(thread_cost bench 3 2>&1) (emulated)"
+# issue 20's dispatch figure: thread Time / functions, in the (emulated) TSC's clocks
+echo "BENCH dispatch funct N=1000: $(dispatch_cost bench 2 2>&1) (emulated)"
 halrun -U >/dev/null 2>&1
 halcmd -f /bench/sample-8.hal >/tmp/sample.out 2>&1 || echo "BENCH sample setup failed: $(tail -n 1 /tmp/sample.out)"
 t0=$(now)

@@ -2,6 +2,13 @@
 // halsampler/halstreamer: option parsing, output format (RULINGS.md), input lines.
 #include <gtest/gtest.h>
 
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <cstdio>
+#include <cstring>
+#include <limits>
+#include <random>
 #include <vector>
 
 #include "sample_format.hpp"
@@ -206,3 +213,111 @@ TEST(HalstreamerLine, BlankLinesAreRecognised)
 }
 
 }  // namespace
+
+namespace {
+
+// What halsampler printed before issue 20 (and what its page documents): printf.
+std::string printf_line(double v)
+{
+    char buf[400];
+    std::snprintf(buf, sizeof(buf), "%f \n", v);
+    return buf;
+}
+
+std::string fast_line(double v)
+{
+    hal_fifo_value rec[3];
+    rec[HAL_FIFO_REC_SAMPLE].s = 0;
+    rec[HAL_FIFO_REC_FLAGS].u = 0;
+    rec[2].f = v;
+    return hal::format_sample("f", rec, false);
+}
+
+}  // namespace
+
+TEST(HalsamplerFormat, FloatsAreByteForBytePrintf)
+{
+    const double tricky[] = {0.0, -0.0, 1.0, -1.0, 0.5, 0.0000005, 0.0000015, 0.0000025,
+                             -0.0000005, 0.00000049999999999999994, 0.0078125, 0.0234375,
+                             1e-7, -1e-7, 1e-300, 4.9e-324, -4.9e-324, 2.2250738585072014e-308,
+                             123456.7890125, 999999.9999995, 9999999.9999995, 0.1, 0.2, 0.3,
+                             1.0 / 3, 2.0 / 3, 1e15, 1e16 + 2, 9007199254740993.0, 1e22, 1e23,
+                             1.7976931348623157e308, -1.7976931348623157e308,
+                             std::numeric_limits<double>::infinity(),
+                             -std::numeric_limits<double>::infinity(),
+                             std::numeric_limits<double>::quiet_NaN(),
+                             -std::numeric_limits<double>::quiet_NaN()};
+    for (double v : tricky)
+        EXPECT_EQ(fast_line(v), printf_line(v)) << "value bits " << std::hexfloat << v;
+    // Ties at the sixth decimal that are exact in binary: k/2^n, rounded to even by printf.
+    for (int k = -4096; k <= 4096; k++) {
+        double v = k / 1048576.0;  // multiples of 2^-20
+        EXPECT_EQ(fast_line(v), printf_line(v)) << std::hexfloat << v;
+    }
+    // Every tie in range: the binary fractions with 128 as denominator (v * 10^6 ends
+    // in exactly .5 only for odd multiples of 1/128), and their neighbours.
+    for (int j = -3000; j <= 3000; j++) {
+        double v = j / 128.0;
+        EXPECT_EQ(fast_line(v), printf_line(v)) << std::hexfloat << v;
+        EXPECT_EQ(fast_line(std::nextafter(v, 1e9)), printf_line(std::nextafter(v, 1e9)));
+        EXPECT_EQ(fast_line(std::nextafter(v, -1e9)), printf_line(std::nextafter(v, -1e9)));
+    }
+    // Both sides of the limit of the integer path (2^43) and of the 64-bit range.
+    for (double v : {std::ldexp(1.0, 43), std::nextafter(std::ldexp(1.0, 43), 0.0),
+                     std::ldexp(1.0, 44) + 0.5, 1.8e13, 1.9e13, 1e19, 123456789012.345678})
+        EXPECT_EQ(fast_line(v), printf_line(v)) << std::hexfloat << v;
+    // A fixed pseudo-random spread of magnitudes and bit patterns.
+    std::mt19937_64 gen(20);
+    for (int i = 0; i < 20000; i++) {
+        uint64_t bits = gen();
+        double v;
+        std::memcpy(&v, &bits, sizeof(v));
+        if (i % 2)
+            v = std::ldexp(static_cast<double>(bits >> 11), static_cast<int>(gen() % 110) - 100);
+        EXPECT_EQ(fast_line(v), printf_line(v)) << std::hexfloat << v;
+    }
+}
+
+TEST(HalsamplerFormat, IntegersAreByteForBytePrintf)
+{
+    hal_fifo_value rec[6];
+    rec[HAL_FIFO_REC_SAMPLE].s = INT32_MIN;
+    rec[HAL_FIFO_REC_FLAGS].u = 0;
+    rec[2].s = INT32_MIN;
+    rec[3].u = UINT32_MAX;
+    rec[4].s = 0;
+    rec[5].u = 2;  // any nonzero bit prints 1
+    EXPECT_EQ(hal::format_sample("susb", rec, true), "-2147483648 -2147483648 4294967295 0 1 \n");
+}
+
+TEST(HalstreamerLine, FastAndSlowParsingAgreeWithStrtod)
+{
+    // Spellings from_chars takes and those left to strtod/strtoll, all as before issue 20.
+    const char* floats[] = {"0", "-0", "0.000000", "1", "-1.5", "3.14159265358979", "1e10", "-2E-3",
+                            "0.1", "1.7976931348623157e308", "2.2250738585072014e-308",
+                            "123456789012345678901234567890", ".5", "5.", "+2.5", "0x1p3", "inf",
+                            "-Infinity", "nan", "1e-320"};
+    for (const char* f : floats) {
+        auto v = hal::parse_stream_line("f", f);
+        char* end = nullptr;
+        errno = 0;
+        double want = std::strtod(f, &end);
+        bool ok = *end == 0 && errno != ERANGE;
+        ASSERT_EQ(static_cast<bool>(v), ok) << f;
+        if (ok && !std::isnan(want)) {
+            EXPECT_EQ(std::memcmp(&(*v)[0].f, &want, sizeof(want)), 0) << f;
+        }
+    }
+    for (const char* f : {"1e400", "-1e400", "1.5x", "--1", "1e", "e5"})
+        EXPECT_FALSE(hal::parse_stream_line("f", f)) << f;
+    EXPECT_EQ((*hal::parse_stream_line("s", "+7"))[0].s, 7);
+    EXPECT_EQ((*hal::parse_stream_line("s", "-2147483648"))[0].s, INT32_MIN);
+    EXPECT_FALSE(hal::parse_stream_line("s", "2147483648"));
+    EXPECT_EQ((*hal::parse_stream_line("u", "4294967295"))[0].u, UINT32_MAX);
+    EXPECT_FALSE(hal::parse_stream_line("u", "4294967296"));
+    EXPECT_FALSE(hal::parse_stream_line("u", "-1"));
+    EXPECT_EQ((*hal::parse_stream_line("L", "-9223372036854775808"))[0].s, INT64_MIN);
+    EXPECT_FALSE(hal::parse_stream_line("L", "9223372036854775808"));
+    EXPECT_EQ((*hal::parse_stream_line("K", "18446744073709551615"))[0].u, UINT64_MAX);
+    EXPECT_FALSE(hal::parse_stream_line("K", "18446744073709551616"));
+}

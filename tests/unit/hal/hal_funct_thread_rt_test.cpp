@@ -4,6 +4,9 @@
 #include "hal_rt_fixture.hpp"
 
 #include <atomic>
+#include <memory>
+#include <string>
+#include <vector>
 #include <chrono>
 #include <thread>
 
@@ -322,7 +325,7 @@ TEST_F(HalRt, AStartedThreadCallsItsFunctionsWithArgumentAndPeriod)
     long long period_ms = thread_rec("t1")->period_ns / 1000000;
     EXPECT_LE(c.calls.load(), ms / (period_ms ? period_ms : 1) + 10) << "after " << ms << " ms";
     EXPECT_EQ(c.period.load(), thread_rec("t1")->period_ns);
-    EXPECT_GE(thread_rec("t1")->cycles, static_cast<rtapi_u64>(c.calls.load()));
+    EXPECT_GE(thread_rt("t1")->cycles, static_cast<rtapi_u64>(c.calls.load()));
 }
 
 TEST_F(HalRt, StopThreadsStopsTheCalls)
@@ -376,6 +379,91 @@ TEST_F(HalRt, ExitOfAComponentWhileThreadsRunTakesItsFunctionOffOtherThreads)
     EXPECT_TRUE(eventually([&] { return mine.calls.load() >= before + 3; }));
     EXPECT_EQ(theirs.calls.load(), frozen);
     EXPECT_THAT(thread_functs("t1"), ElementsAre("rt.count"));
+}
+
+// Dispatch tables (issue 20): the thread runs an array rebuilt on addf/delf while it runs.
+struct Guarded {
+    std::atomic<bool> removed{false};   // set once delf returned
+    std::atomic<int> calls{0};
+    std::atomic<int> late{0};            // calls after delf returned: must stay 0
+};
+
+void guarded_call(void* arg, long)
+{
+    auto* g = static_cast<Guarded*>(arg);
+    if (g->removed.load())
+        g->late.fetch_add(1);
+    g->calls.fetch_add(1);
+}
+
+TEST_F(HalRt, AddWhileRunningIsCalledFromTheNextCycles)
+{
+    Counter c;
+    ASSERT_EQ(hal_export_funct("rt.count", count_call, &c, 0, 0, comp_), 0);
+    ASSERT_EQ(hal_export_funct("rt.idle", nothing, nullptr, 0, 0, comp_), 0);
+    ASSERT_EQ(new_thread("t1", kPeriod, 0), 0);
+    ASSERT_EQ(hal_add_funct_to_thread("rt.idle", "t1", 1), 0);
+    ASSERT_EQ(hal_start_threads(), 0);
+    ASSERT_EQ(hal_add_funct_to_thread("rt.count", "t1", 1), 0);   // in front: a new table
+    EXPECT_TRUE(eventually([&] { return c.calls.load() >= 3; }));
+    ASSERT_EQ(hal_stop_threads(), 0);
+    EXPECT_THAT(thread_functs("t1"), ElementsAre("rt.count", "rt.idle"));
+}
+
+TEST_F(HalRt, DelWhileRunningReturnsOnlyWhenNoCallCanFollow)
+{
+    ASSERT_EQ(new_thread("t1", kPeriod, 0), 0);
+    std::vector<std::unique_ptr<Guarded>> g;
+    // More functions than a first table holds: appends also grow it while running.
+    for (int i = 0; i < 40; i++) {
+        g.push_back(std::make_unique<Guarded>());
+        std::string name = "rt.g" + std::to_string(i);
+        ASSERT_EQ(hal_export_funct(name.c_str(), guarded_call, g.back().get(), 0, 0, comp_), 0);
+    }
+    ASSERT_EQ(hal_start_threads(), 0);
+    for (int i = 0; i < 40; i++) {
+        std::string name = "rt.g" + std::to_string(i);
+        int pos = i % 3 == 0 ? 1 : i % 3 == 1 ? -1 : 2;   // first, last, second
+        ASSERT_EQ(hal_add_funct_to_thread(name.c_str(), "t1", pos), 0) << name;
+    }
+    EXPECT_EQ(thread_functs("t1").size(), 40u);
+    ASSERT_TRUE(eventually([&] { return g[39]->calls.load() >= 2; }));
+    for (int i = 0; i < 40; i += 2) {   // every other one, while the others keep running
+        std::string name = "rt.g" + std::to_string(i);
+        ASSERT_EQ(hal_del_funct_from_thread(name.c_str(), "t1"), 0) << name;
+        g[i]->removed.store(true);
+    }
+    int before = g[1]->calls.load();
+    EXPECT_TRUE(eventually([&] { return g[1]->calls.load() >= before + 3; }));
+    ASSERT_EQ(hal_stop_threads(), 0);
+    for (int i = 0; i < 40; i++) {
+        EXPECT_EQ(g[i]->late.load(), 0) << "rt.g" << i << " was called after its delf returned";
+        EXPECT_GT(g[i]->calls.load(), 0) << "rt.g" << i;
+    }
+    std::vector<std::string> left = thread_functs("t1");
+    EXPECT_EQ(left.size(), 20u);
+    for (const std::string& n : left)
+        EXPECT_EQ(std::stoi(n.substr(4)) % 2, 1) << n;
+}
+
+TEST_F(HalRt, FunctionAndThreadTimingIsKeptByTheDispatchLoop)
+{
+    Counter c;
+    ASSERT_EQ(hal_export_funct("rt.count", count_call, &c, 0, 0, comp_), 0);
+    ASSERT_EQ(hal_export_funct("rt.idle", nothing, nullptr, 0, 0, comp_), 0);
+    ASSERT_EQ(new_thread("t1", kPeriod, 0), 0);
+    ASSERT_EQ(hal_add_funct_to_thread("rt.count", "t1", -1), 0);
+    ASSERT_EQ(hal_add_funct_to_thread("rt.idle", "t1", -1), 0);
+    ASSERT_EQ(hal_start_threads(), 0);
+    ASSERT_TRUE(eventually([&] { return thread_rt("t1")->cycles >= 3; }));
+    ASSERT_EQ(hal_stop_threads(), 0);
+    // Clocks are never 0 across a call; the thread's time covers both functions.
+    EXPECT_GT(funct_rec("rt.count")->tmax, 0);
+    EXPECT_GT(funct_rec("rt.idle")->tmax, 0);
+    EXPECT_GE(thread_rt("t1")->tmax, funct_rec("rt.count")->tmax);
+    EXPECT_GT(*thread_rec("t1")->time_ptr, 0);
+    EXPECT_GT(*funct_rec("rt.idle")->time_ptr, 0);
+    EXPECT_EQ(seg_ptr(param_rec("t1.tmax")->data_off), &thread_rt("t1")->tmax);   // the parameter is it
 }
 
 }  // namespace

@@ -35,6 +35,11 @@ inline struct hal_funct_rec* funct_rec(const std::string& n) { return find_rec<s
 inline struct hal_thread_rec* thread_rec(const std::string& n) { return find_rec<struct hal_thread_rec>(HAL_KIND_THREAD, n); }
 inline struct hal_comp_rec* comp_rec(const std::string& n) { return find_rec<struct hal_comp_rec>(HAL_KIND_COMP, n); }
 inline void* seg_ptr(rtapi_u32 off) { return off ? hal_shmem_base + off : nullptr; }
+// What a thread writes each period (struct hal_thread_rt): cycles, run time, tmax.
+inline struct hal_thread_rt* thread_rt(const std::string& n)
+{
+    return static_cast<struct hal_thread_rt*>(seg_ptr(thread_rec(n)->rt_off));
+}
 
 // Function names of a thread in execution order, read from the segment.
 std::vector<std::string> thread_functs(const std::string& thread);
