@@ -14,4 +14,6 @@ loadusr -w halsampler -n 1000 $TEST_TMPDIR/samples
 HAL
 halrun -f "$TEST_TMPDIR/test.hal"
 echo "halrun exit $?"
-uniq "$TEST_TMPDIR/samples"
+# On a loaded machine halstreamer may deliver its first line after the thread
+# started: the pin's initial 0 sampled before it is not a lost or reordered line.
+uniq "$TEST_TMPDIR/samples" | sed '1{/^0 $/d}'
