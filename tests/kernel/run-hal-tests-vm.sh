@@ -17,7 +17,7 @@ for t in $(find "$tests" \( -name test.hal -o -name test.sh \) -type f | sort); 
 		echo "HALTEST SKIP $rel"; skip=$((skip + 1)); continue
 	fi
 	if [ -e "$dir/needs-python" ] && ! command -v python3 >/dev/null 2>&1; then
-		echo "HALTEST SKIP $rel (no python3 in the VM: KTEST_PYTHON=1)"; skip=$((skip + 1)); continue
+		echo "HALTEST SKIP $rel (no python3 in the VM: built with KTEST_PYTHON=0)"; skip=$((skip + 1)); continue
 	fi
 	rm -rf "$work/tmp"; mkdir -p "$work/tmp"
 	(

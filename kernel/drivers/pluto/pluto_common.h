@@ -134,10 +134,9 @@ static inline int pluto_setup(const char *drv, const char *fw_name, int comp_id,
 	int rc = rtapi_request_firmware(&fw, fw_name);
 
 	if (rc == -ENOENT) {
-		rtapi_print_msg(RTAPI_MSG_ERR, "%s: firmware %s not found: the Pluto-P image "
-				"is not shipped with HAL; put the .rbf of this design (%d bytes) "
-				"at /lib/firmware/%s (simulated flavor: or in a directory named in "
-				"HAL_FIRMWARE_PATH)\n", drv, fw_name, PLUTO_IMAGE_FILE, fw_name);
+		rtapi_print_msg(RTAPI_MSG_ERR, "%s: firmware %s not found (HAL does not "
+				"ship it): put the .rbf (%d bytes) at /lib/firmware/%s or, "
+				"simulated flavor, under HAL_FIRMWARE_PATH\n", drv, fw_name, PLUTO_IMAGE_FILE, fw_name);
 		return rc;
 	}
 	if (rc)
