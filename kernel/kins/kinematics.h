@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: GPL-2.0-or-later */
 /* kinematics.h - the interface between motion (motmod, and the test component kinstest)
  * and a kinematics module (trivkins, gantrykins, rotatekins, tripodkins, genhexkins,
- * maxkins, genserkins, pumakins, scarakins): ../shared/machine/kinematics.md section 1.
+ * maxkins, genserkins, pumakins, scarakins): the contract of docs/kinematics.md.
  *
  * A kinematics module exports the six functions below under these names (the names
  * LinuxCNC's modules export, so a kinematics module written for it plugs in too).
