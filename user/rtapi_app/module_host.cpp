@@ -15,6 +15,7 @@
 #include <mutex>
 
 #include "hal_host.h"
+#include "module_deps.hpp"
 #include "rtapi.h"
 #include "rtapi_app.h"
 #include "rtapi_modparam_uspace.h"
@@ -139,6 +140,7 @@ struct ModuleHost::Loaded {
     std::string name;
     DlHandle handle;
     void (*exit_fn)(void) = nullptr;
+    std::vector<std::string> uses;  // loaded modules whose exports this one binds
 };
 
 ModuleHost::ModuleHost(std::filesystem::path dir) : dir_(std::move(dir)) {}
@@ -185,6 +187,10 @@ Result<void> ModuleHost::load(const std::string& name, const std::vector<ModuleA
     auto joined = join_module_args(name, args);
     if (!joined)
         return joined.error();
+    std::vector<ModuleFile> before;
+    for (const auto& m : loaded_)
+        before.push_back({m->name, dir_ / (m->name + ".so")});
+    std::vector<std::string> uses = modules_bound_by(so, before);
 
     MessageCapture capture;
     hal_set_load_context(name.c_str(), joined->c_str());
@@ -204,7 +210,8 @@ Result<void> ModuleHost::load(const std::string& name, const std::vector<ModuleA
     // Loaded fine but complained: nobody asked, so the daemon's log gets it.
     for (const std::string& e : errors)
         std::fprintf(stderr, "%s\n", e.c_str());
-    loaded_.push_back(std::make_unique<Loaded>(Loaded{name, std::move(handle), exit_fn}));
+    loaded_.push_back(
+        std::make_unique<Loaded>(Loaded{name, std::move(handle), exit_fn, std::move(uses)}));
     return {};
 }
 
@@ -229,6 +236,13 @@ Result<void> ModuleHost::unload(const std::string& name)
                            [&](const auto& m) { return m->name == name; });
     if (it == loaded_.end())
         return module_error(-ENOENT, name, "not loaded");
+    // The kernel's rule: a module whose exports another one calls stays.
+    std::string users;
+    for (const auto& m : loaded_)
+        if (std::find(m->uses.begin(), m->uses.end(), name) != m->uses.end())
+            users += (users.empty() ? "" : ", ") + m->name;
+    if (!users.empty())
+        return module_error(-EBUSY, name, "in use by " + users + " (unload it first)");
     unload_one(**it);
     loaded_.erase(it);
     return {};

@@ -1,0 +1,13 @@
+# The kernel refuses rmmod of a module whose exports another module uses; the
+# simulated flavor must refuse too, or kinstest would call unmapped code.
+halcmd loadrt trivkins || exit 1
+halcmd loadrt kinstest joints=3 || exit 1
+halcmd unloadrt trivkins
+echo "unload while used status $?"
+halcmd -s show comp | awk '{ print "loaded", $3 }'
+halcmd unloadrt kinstest
+echo "kinstest unload status $?"
+halcmd unloadrt trivkins
+echo "trivkins unload status $?"
+halcmd -s show comp | awk '{ print "after", $3 }'
+halrun -U
