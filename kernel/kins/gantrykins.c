@@ -7,6 +7,7 @@
 #include "rtapi.h"
 #include "rtapi_app.h"
 #include "hal.h"
+#include "kins_module.h"
 #include "kins_glue.h"
 #include "gantrykins.h"
 
@@ -19,29 +20,9 @@ RTAPI_MP_STRING(coordinates, "axis letters of joints 0, 1, ... (default XYZABC, 
 struct gantrykins_params *gantrykins;
 static int comp_id;
 
-KINEMATICS_TYPE kinematicsType(void)
-{
-	return KINEMATICS_BOTH;
-}
-
-static KINEMATICS_TYPE own_type(void) __attribute__((alias("kinematicsType")));
-
-int kinematicsSwitchable(void)
-{
-	return 0;
-}
-
-int kinematicsSwitch(int switchkins_type)
-{
-	return switchkins_type == KINS_SWITCH_PRIMARY ? 0 : -EINVAL;
-}
-
-EXPORT_SYMBOL(kinematicsForward);
-EXPORT_SYMBOL(kinematicsInverse);
-EXPORT_SYMBOL(kinematicsHome);
-EXPORT_SYMBOL(kinematicsType);
-EXPORT_SYMBOL(kinematicsSwitchable);
-EXPORT_SYMBOL(kinematicsSwitch);
+KINS_TYPE_IS(KINEMATICS_BOTH)
+KINS_NOT_SWITCHABLE
+KINS_EXPORTS
 
 int rtapi_app_main(void)
 {

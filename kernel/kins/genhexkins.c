@@ -13,6 +13,7 @@
 #include "rtapi.h"
 #include "rtapi_app.h"
 #include "hal.h"
+#include "kins_module.h"
 #include "genhexkins.h"
 
 MODULE_LICENSE("GPL");
@@ -24,29 +25,9 @@ RTAPI_MP_STRING(coordinates, "axis letters of the joints for switchkins type 1 (
 struct genhexkins_state *genhexkins;
 static int comp_id;
 
-KINEMATICS_TYPE kinematicsType(void)
-{
-	return KINEMATICS_BOTH;
-}
-
-static KINEMATICS_TYPE own_type(void) __attribute__((alias("kinematicsType")));
-
-int kinematicsSwitchable(void)
-{
-	return 1;
-}
-
-int kinematicsSwitch(int switchkins_type)
-{
-	return kins_switch_to(&genhexkins->sw, switchkins_type);
-}
-
-EXPORT_SYMBOL(kinematicsForward);
-EXPORT_SYMBOL(kinematicsInverse);
-EXPORT_SYMBOL(kinematicsHome);
-EXPORT_SYMBOL(kinematicsType);
-EXPORT_SYMBOL(kinematicsSwitchable);
-EXPORT_SYMBOL(kinematicsSwitch);
+KINS_TYPE_IS(KINEMATICS_BOTH)
+KINS_SWITCHABLE(&genhexkins->sw)
+KINS_EXPORTS
 
 /* genhexkins.GROUP.N.x/y/z */
 static int export_points(hal_float_t *(*p)[3], const char *group)

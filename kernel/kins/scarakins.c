@@ -7,6 +7,7 @@
 #include "rtapi.h"
 #include "rtapi_app.h"
 #include "hal.h"
+#include "kins_module.h"
 #include "scarakins.h"
 
 MODULE_LICENSE("GPL");
@@ -18,29 +19,9 @@ RTAPI_MP_STRING(coordinates, "axis letters of the joints for switchkins type 1 (
 struct scarakins_state *scarakins;
 static int comp_id;
 
-KINEMATICS_TYPE kinematicsType(void)
-{
-	return KINEMATICS_BOTH;
-}
-
-static KINEMATICS_TYPE own_type(void) __attribute__((alias("kinematicsType")));
-
-int kinematicsSwitchable(void)
-{
-	return 1;
-}
-
-int kinematicsSwitch(int switchkins_type)
-{
-	return kins_switch_to(&scarakins->sw, switchkins_type);
-}
-
-EXPORT_SYMBOL(kinematicsForward);
-EXPORT_SYMBOL(kinematicsInverse);
-EXPORT_SYMBOL(kinematicsHome);
-EXPORT_SYMBOL(kinematicsType);
-EXPORT_SYMBOL(kinematicsSwitchable);
-EXPORT_SYMBOL(kinematicsSwitch);
+KINS_TYPE_IS(KINEMATICS_BOTH)
+KINS_SWITCHABLE(&scarakins->sw)
+KINS_EXPORTS
 
 int rtapi_app_main(void)
 {

@@ -6,6 +6,7 @@
 #include "rtapi.h"
 #include "rtapi_app.h"
 #include "hal.h"
+#include "kins_module.h"
 #include "kins_glue.h"
 #include "trivkins.h"
 
@@ -20,30 +21,9 @@ RTAPI_MP_STRING(kinstype, "1 identity (default), b both, f forward only, i inver
 struct trivkins_state trivkins;
 static int comp_id;
 
-KINEMATICS_TYPE kinematicsType(void)
-{
-	return trivkins.type;
-}
-
-/* This module's own kinematicsType, whatever the name resolves to (kins_claim). */
-static KINEMATICS_TYPE own_type(void) __attribute__((alias("kinematicsType")));
-
-int kinematicsSwitchable(void)
-{
-	return 0;
-}
-
-int kinematicsSwitch(int switchkins_type)
-{
-	return switchkins_type == KINS_SWITCH_PRIMARY ? 0 : -EINVAL;
-}
-
-EXPORT_SYMBOL(kinematicsForward);
-EXPORT_SYMBOL(kinematicsInverse);
-EXPORT_SYMBOL(kinematicsHome);
-EXPORT_SYMBOL(kinematicsType);
-EXPORT_SYMBOL(kinematicsSwitchable);
-EXPORT_SYMBOL(kinematicsSwitch);
+KINS_TYPE_IS(trivkins.type)
+KINS_NOT_SWITCHABLE
+KINS_EXPORTS
 
 int rtapi_app_main(void)
 {
