@@ -170,4 +170,41 @@ static inline int pluto_setup(const char *drv, const char *fw_name, int comp_id,
 	return 0;
 }
 
+/* Init code, all of it both drivers share: hal_init(drv), the driver's block of
+ * 'size' bytes of HAL memory (its hal_parport_t at 'port_offset'), pluto_setup().
+ * 0 with *comp_id and *block set and the port held, or a negative errno after a
+ * message with nothing left. */
+static inline int pluto_open(const char *drv, const char *fw_name, unsigned long size,
+			     unsigned long port_offset, int ioaddr, int ioaddr_hi,
+			     int *comp_id, void **block)
+{
+	int id = hal_init(drv), rc;
+	char *mem;
+
+	if (id < 0)
+		return id;
+	mem = hal_malloc(size);
+	if (!mem) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "%s: out of HAL memory\n", drv);
+		hal_exit(id);
+		return -ENOMEM;
+	}
+	rc = pluto_setup(drv, fw_name, id, (hal_parport_t *)(mem + port_offset), ioaddr,
+			 ioaddr_hi);
+	if (rc) {
+		hal_exit(id);
+		return rc;
+	}
+	*comp_id = id;
+	*block = mem;
+	return 0;
+}
+
+/* Undoes pluto_open(): exit, or an init step after it that failed. */
+static inline void pluto_close(hal_parport_t *pp, int comp_id)
+{
+	hal_parport_release(pp);
+	hal_exit(comp_id);
+}
+
 #endif /* PLUTO_COMMON_H */

@@ -85,25 +85,8 @@ static int export_all(struct pluto_servo *s)
 		err = export_pwm(&s->pwm[i], i);
 	if (!err)
 		err = hal_param_bit_newf(HAL_RW, &s->is_pdm, comp_id, "pluto-servo.pwm.is-pdm");
-	for (i = 0; !err && i < 20; i++) {
-		err = hal_pin_bit_newf(HAL_IN, &s->dout[i], comp_id, "pluto-servo.dout.%02d", i);
-		if (!err)
-			err = hal_param_bit_newf(HAL_RW, &s->dout_invert[i], comp_id,
-						 "pluto-servo.dout.%02d-invert", i);
-	}
-	for (i = 0; !err && i < 20; i++) {
-		err = hal_pin_bit_newf(HAL_OUT, &s->din[i], comp_id, "pluto-servo.din.%02d", i);
-		if (!err)
-			err = hal_pin_bit_newf(HAL_OUT, &s->din_not[i], comp_id,
-					       "pluto-servo.din.%02d-not", i);
-	}
 	if (!err)
-		err = hal_param_u32_newf(HAL_RW, &s->communication_error, comp_id,
-					 "pluto-servo.communication-error");
-	if (!err)
-		err = hal_param_s32_newf(HAL_RW, &s->debug_0, comp_id, "pluto-servo.debug-0");
-	if (!err)
-		err = hal_param_s32_newf(HAL_RW, &s->debug_1, comp_id, "pluto-servo.debug-1");
+		err = pluto_export_io(&s->io, comp_id, "pluto-servo", 20, 20);
 	if (!err)
 		err = hal_export_funct("pluto-servo.read", pluto_servo_read, s, 1, 0, comp_id);
 	if (!err)
@@ -122,27 +105,16 @@ int rtapi_app_main(void)
 	}
 	if (err)
 		return err;
-	comp_id = hal_init("pluto_servo");
-	if (comp_id < 0)
-		return comp_id;
-	servo = hal_malloc(sizeof(*servo));
-	if (!servo) {
-		rtapi_print_msg(RTAPI_MSG_ERR, "pluto_servo: out of HAL memory\n");
-		hal_exit(comp_id);
-		return -ENOMEM;
-	}
-	err = pluto_setup("pluto_servo", "pluto/pluto_servo.rbf", comp_id, &servo->port,
-			  ioaddr, ioaddr_hi);
-	if (err) {
-		hal_exit(comp_id);
+	err = pluto_open("pluto_servo", "pluto/pluto_servo.rbf", sizeof(*servo),
+			 offsetof(struct pluto_servo, port), ioaddr, ioaddr_hi, &comp_id,
+			 (void **)&servo);
+	if (err)
 		return err;
-	}
 	servo->epp_wide = epp_wide;
 	servo->control_bits = (watchdog ? 0x4000 : 0) | (test_encoder ? 0x2000 : 0);
 	err = export_all(servo);
 	if (err) {
-		hal_parport_release(&servo->port);
-		hal_exit(comp_id);
+		pluto_close(&servo->port, comp_id);
 		return err;
 	}
 	hal_ready(comp_id);
@@ -151,6 +123,5 @@ int rtapi_app_main(void)
 
 void rtapi_app_exit(void)
 {
-	hal_parport_release(&servo->port);
-	hal_exit(comp_id);
+	pluto_close(&servo->port, comp_id);
 }

@@ -15,11 +15,6 @@ static rtapi_s64 extend14(rtapi_s64 around, rtapi_u32 low)
 	return around + d;
 }
 
-static int dout_level(const struct pluto_servo *s, int k)
-{
-	return (*s->dout[k] ^ s->dout_invert[k]) & 1;
-}
-
 static double safe_scale(double scale)
 {
 	return scale > -1e-20 && scale < 1e-20 ? 1.0 : scale;
@@ -64,8 +59,8 @@ static rtapi_u32 pwm_word(struct pluto_servo *s, int ch)
 	if (s->is_pdm)
 		w |= 0x4000;
 	/* UP and DOWN of channel ch are dout 10 + 2ch and 11 + 2ch */
-	w ^= (rtapi_u32)dout_level(s, 10 + 2 * ch) << 12;
-	w ^= (rtapi_u32)dout_level(s, 11 + 2 * ch) << 13;
+	w ^= (rtapi_u32)pluto_dout_level(&s->io, 10 + 2 * ch) << 12;
+	w ^= (rtapi_u32)pluto_dout_level(&s->io, 11 + 2 * ch) << 13;
 	return w;
 }
 
@@ -76,13 +71,13 @@ COMP_FP_LOCAL void pluto_servo_write(void *arg, long period)
 	rtapi_u16 out = s->control_bits | (s->z_polarity ? 0x8000 : 0);
 	int k;
 
-	if (s->communication_error)
+	if (s->io.communication_error)
 		return;		/* outputs frozen; the watchdog will bite */
 	pluto_addr(base, 0);
 	pluto_write32(base, s->epp_wide, pwm_word(s, 0) | pwm_word(s, 1) << 16);
 	pluto_write32(base, s->epp_wide, pwm_word(s, 2) | pwm_word(s, 3) << 16);
 	for (k = 0; k < 10; k++)
-		out |= (rtapi_u16)(dout_level(s, k) << k);
+		out |= (rtapi_u16)(pluto_dout_level(&s->io, k) << k);
 	pluto_write16(base, s->epp_wide, out);
 }
 
@@ -112,28 +107,15 @@ static void update_encoder(struct pluto_encoder *e, rtapi_u32 word, double perio
 COMP_FP_LOCAL void pluto_servo_read(void *arg, long period)
 {
 	struct pluto_servo *s = arg;
-	unsigned int base = s->port.base;
 	double period_s = period * 1e-9;
-	rtapi_u32 word[4], in;
+	rtapi_u32 word[4];
 	int i;
 
-	pluto_addr(base, 0);
-	word[0] = pluto_read32(base, s->epp_wide);
-	if (pluto_timed_out(base)) {
-		s->communication_error++;
-		pluto_clear_timeout(base);
-	}
-	if (s->communication_error)
+	if (pluto_read_words(&s->port, s->epp_wide, &s->io, word))
 		return;
-	for (i = 1; i < 4; i++)
-		word[i] = pluto_read32(base, s->epp_wide);
 	for (i = 0; i < 4; i++)
 		update_encoder(&s->enc[i], word[i], period_s);
-	in = pluto_read32(base, s->epp_wide);
-	for (i = 0; i < 20; i++) {
-		*s->din[i] = (in >> i) & 1;
-		*s->din_not[i] = !*s->din[i];
-	}
-	s->debug_0 = (rtapi_s32)word[0];
-	s->debug_1 = (rtapi_s32)s->enc[0].count64;
+	pluto_read_din(&s->port, s->epp_wide, &s->io);
+	s->io.debug_0 = (rtapi_s32)word[0];
+	s->io.debug_1 = (rtapi_s32)s->enc[0].count64;
 }

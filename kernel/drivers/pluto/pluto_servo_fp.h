@@ -7,6 +7,7 @@
 #include "rtapi.h"
 #include "hal.h"
 #include "hal_parport.h"
+#include "pluto_io.h"
 #include "fp_split.h"
 
 struct pluto_encoder {
@@ -32,11 +33,7 @@ struct pluto_servo {		/* HAL memory */
 	hal_bit_t z_polarity;
 	struct pluto_pwm pwm[4];
 	hal_bit_t is_pdm;
-	hal_bit_t *dout[20];
-	hal_bit_t dout_invert[20];
-	hal_bit_t *din[20], *din_not[20];
-	hal_u32_t communication_error;
-	hal_s32_t debug_0, debug_1;
+	struct pluto_io io;	/* dout 00..19, din 00..19 */
 };
 
 /* Realtime functions exported with uses_fp = 1. */

@@ -73,25 +73,8 @@ static int export_all(struct pluto_step *s)
 		err = hal_param_u32_newf(HAL_RW, &s->stepspace, comp_id, "pluto-step.stepgen.stepspace");
 	if (!err)
 		err = hal_param_u32_newf(HAL_RW, &s->dirtime, comp_id, "pluto-step.stepgen.dirtime");
-	for (i = 0; !err && i < 14; i++) {
-		err = hal_pin_bit_newf(HAL_IN, &s->dout[i], comp_id, "pluto-step.dout.%02d", i);
-		if (!err)
-			err = hal_param_bit_newf(HAL_RW, &s->dout_invert[i], comp_id,
-						 "pluto-step.dout.%02d-invert", i);
-	}
-	for (i = 0; !err && i < 16; i++) {
-		err = hal_pin_bit_newf(HAL_OUT, &s->din[i], comp_id, "pluto-step.din.%02d", i);
-		if (!err)
-			err = hal_pin_bit_newf(HAL_OUT, &s->din_not[i], comp_id,
-					       "pluto-step.din.%02d-not", i);
-	}
 	if (!err)
-		err = hal_param_u32_newf(HAL_RW, &s->communication_error, comp_id,
-					 "pluto-step.communication-error");
-	if (!err)
-		err = hal_param_s32_newf(HAL_RW, &s->debug_0, comp_id, "pluto-step.debug-0");
-	if (!err)
-		err = hal_param_s32_newf(HAL_RW, &s->debug_1, comp_id, "pluto-step.debug-1");
+		err = pluto_export_io(&s->io, comp_id, "pluto-step", 14, 16);
 	if (!err)
 		err = hal_param_float_newf(HAL_RW, &s->debug_2, comp_id, "pluto-step.debug-2");
 	if (!err)
@@ -116,28 +99,17 @@ int rtapi_app_main(void)
 	}
 	if (err)
 		return err;
-	comp_id = hal_init("pluto_step");
-	if (comp_id < 0)
-		return comp_id;
-	step = hal_malloc(sizeof(*step));
-	if (!step) {
-		rtapi_print_msg(RTAPI_MSG_ERR, "pluto_step: out of HAL memory\n");
-		hal_exit(comp_id);
-		return -ENOMEM;
-	}
-	err = pluto_setup("pluto_step", "pluto/pluto_step.rbf", comp_id, &step->port,
-			  ioaddr, ioaddr_hi);
-	if (err) {
-		hal_exit(comp_id);
+	err = pluto_open("pluto_step", "pluto/pluto_step.rbf", sizeof(*step),
+			 offsetof(struct pluto_step, port), ioaddr, ioaddr_hi, &comp_id,
+			 (void **)&step);
+	if (err)
 		return err;
-	}
 	step->epp_wide = epp_wide;
 	step->speedrange = speedrange;
 	step->watchdog_bit = watchdog ? 0x4000 : 0;
 	err = export_all(step);
 	if (err) {
-		hal_parport_release(&step->port);
-		hal_exit(comp_id);
+		pluto_close(&step->port, comp_id);
 		return err;
 	}
 	hal_ready(comp_id);
@@ -146,6 +118,5 @@ int rtapi_app_main(void)
 
 void rtapi_app_exit(void)
 {
-	hal_parport_release(&step->port);
-	hal_exit(comp_id);
+	pluto_close(&step->port, comp_id);
 }

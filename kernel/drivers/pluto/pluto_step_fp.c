@@ -64,7 +64,7 @@ COMP_FP_LOCAL void pluto_step_write(void *arg, long period)
 		fmax = fcap;
 	if (fread < fmax)
 		fmax = fread;
-	if (s->communication_error)
+	if (s->io.communication_error)
 		return;
 	pluto_addr(base, 0);
 	for (i = 0; i < 4; i++) {
@@ -101,11 +101,11 @@ COMP_FP_LOCAL void pluto_step_write(void *arg, long period)
 		if (!*g->enable)
 			rate = 0;
 		if (i == 0)
-			s->debug_1 = rate;
+			s->io.debug_1 = rate;
 		pluto_write16(base, s->epp_wide, (rtapi_u16)(rate & 0xfff));
 	}
 	for (i = 0; i < 14; i++)
-		out |= (rtapi_u16)(((*s->dout[i] ^ s->dout_invert[i]) & 1) << i);
+		out |= (rtapi_u16)(pluto_dout_level(&s->io, i) << i);
 	pluto_write16(base, s->epp_wide, out);
 	pluto_write16(base, s->epp_wide, (rtapi_u16)(steplen | s->speedrange << 6 |
 				dirtime << 8 | (s->step_polarity ? 0x8000 : 0)));
@@ -114,22 +114,13 @@ COMP_FP_LOCAL void pluto_step_write(void *arg, long period)
 COMP_FP_LOCAL void pluto_step_read(void *arg, long period)
 {
 	struct pluto_step *s = arg;
-	unsigned int base = s->port.base;
 	double period_s = period * 1e-9;
 	double units = (double)(1L << (11 + s->speedrange));
-	rtapi_u32 word[4], in;
+	rtapi_u32 word[4];
 	int i;
 
-	pluto_addr(base, 0);
-	word[0] = pluto_read32(base, s->epp_wide);
-	if (pluto_timed_out(base)) {
-		s->communication_error++;
-		pluto_clear_timeout(base);
-	}
-	if (s->communication_error)
+	if (pluto_read_words(&s->port, s->epp_wide, &s->io, word))
 		return;
-	for (i = 1; i < 4; i++)
-		word[i] = pluto_read32(base, s->epp_wide);
 	for (i = 0; i < 4; i++) {
 		struct pluto_stepgen *g = &s->sg[i];
 		double scale = safe_scale(g->scale), steps;
@@ -143,10 +134,6 @@ COMP_FP_LOCAL void pluto_step_read(void *arg, long period)
 		*g->counts = (rtapi_s32)steps;
 		*g->position_fb = steps / scale;
 	}
-	in = pluto_read32(base, s->epp_wide);
-	for (i = 0; i < 16; i++) {
-		*s->din[i] = (in >> i) & 1;
-		*s->din_not[i] = !*s->din[i];
-	}
-	s->debug_0 = (rtapi_s32)word[0];
+	pluto_read_din(&s->port, s->epp_wide, &s->io);
+	s->io.debug_0 = (rtapi_s32)word[0];
 }

@@ -7,6 +7,7 @@
 #include "rtapi.h"
 #include "hal.h"
 #include "hal_parport.h"
+#include "pluto_io.h"
 #include "fp_split.h"
 
 #define PLUTO_STEP_TICK_NS 1600		/* the step generators' tick, 64 clocks of 40 MHz */
@@ -30,11 +31,7 @@ struct pluto_step {		/* HAL memory */
 	struct pluto_stepgen sg[4];
 	hal_bit_t step_polarity;			/* RW */
 	hal_u32_t steplen, stepspace, dirtime;		/* RW, ns */
-	hal_bit_t *dout[14];
-	hal_bit_t dout_invert[14];
-	hal_bit_t *din[16], *din_not[16];
-	hal_u32_t communication_error;
-	hal_s32_t debug_0, debug_1;
+	struct pluto_io io;	/* dout 00..13, din 00..15 */
 	hal_float_t debug_2, debug_3;
 };
 
