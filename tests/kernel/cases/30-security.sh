@@ -26,6 +26,8 @@ check '! echo "$out" | grep -q EXPLOITED'
 check 'echo "$out" | grep -q "REFUSED write to a thread list entry"'
 check 'echo "$out" | grep -q "REFUSED write to a kernel component.s pin pointer slot"'
 check 'echo "$out" | grep -q "REFUSED pin_new aimed at a kernel pin pointer slot"'
+check 'echo "$out" | grep -q "REFUSED write to a dispatch slot.s code address"'
+check 'echo "$out" | grep -q "REFUSED write to a thread.s dispatch table offset"'
 check '[ -z "$(oops)" ]'
 # the HAL still works after all that
 c1=$(asu 'halcmd -s show thread' | wc -l)
