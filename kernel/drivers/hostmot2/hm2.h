@@ -232,6 +232,9 @@ struct hm2_bspi_inst {
 	int frame_echo[HM2_BSPI_FRAMES];	/* a reply word comes back (descriptor bit 31 clear) */
 	int num_frames;
 	volatile int active;		/* frames registered and allocated: sent every cycle */
+	int sent;			/* write() sent them: read() takes the replies */
+	int num_echo;			/* frames with a reply */
+	rtapi_u32 count_rd;		/* FIFO counts, read before the replies */
 	rtapi_u32 pending[16], pending_chan[16];	/* hm2_bspi_write_chan words */
 	volatile int num_pending;
 	int (*volatile read_fn)(void *);

@@ -7,8 +7,10 @@
  *   reg 1: descriptor setup, written 16 times from #15 down to #0
  *   reg 2: FIFO counts; any write empties both FIFOs
  * Every cycle read() pops one reply per registered frame whose channel echoes (with
- * the other per-cycle reads; a channel is set up before its frames are added) and calls the read function; write() calls the write function and pushes
- * the frames. Integer-only; the callbacks may use FP (they run in read/write). */
+ * the other per-cycle reads; a channel is set up before its frames are added), if
+ * the previous write() sent the frames, and calls the read function when they all
+ * arrived (the FIFO count is read first); write() empties the FIFOs, calls the write
+ * function and pushes the frames. Integer-only; the callbacks may use FP (they run in read/write). */
 #include "rtapi.h"
 #include "rtapi_string.h"
 #include "hal.h"
@@ -121,8 +123,9 @@ int hm2_bspi_request_reads(struct hostmot2 *hm2)
 	for (i = 0; i < hm2->bspi.num && rc >= 0; i++) {
 		struct hm2_bspi_inst *b = &hm2->bspi.inst[i];
 
-		if (!b->active)
-			continue;
+		if (!b->active || !b->sent)
+			continue;	/* nothing in flight: an empty FIFO must not be popped */
+		rc = hm2_tram_extra_read(hm2, hm2_md_addr(hm2->bspi.md, REG_COUNT, i), &b->count_rd, 4);
 		for (k = 0; k < b->num_frames && rc >= 0; k++)
 			if (b->frame_echo[k])
 				rc = hm2_tram_extra_read(hm2, hm2_md_addr(hm2->bspi.md, REG_FIFO, i),
@@ -149,13 +152,20 @@ void hm2_bspi_read(struct hostmot2 *hm2)
 {
 	int i;
 
-	for (i = 0; i < hm2->bspi.num; i++)
-		if (hm2->bspi.inst[i].active)
-			call(&hm2->bspi.inst[i], &hm2->bspi.inst[i].read_fn, &hm2->bspi.inst[i].read_data);
+	for (i = 0; i < hm2->bspi.num; i++) {
+		struct hm2_bspi_inst *b = &hm2->bspi.inst[i];
+
+		/* a cycle shorter than the frames: not all replies are in, and the reads
+		 * above took what there was; skip it (write() empties the FIFOs) */
+		if (b->active && b->sent && (int)(b->count_rd & 0x1F) >= b->num_echo)
+			call(b, &b->read_fn, &b->read_data);
+		b->sent = 0;
+	}
 }
 
 void hm2_bspi_write(struct hostmot2 *hm2)
 {
+	rtapi_u32 zero = 0;
 	int i, k;
 
 	for (i = 0; i < hm2->bspi.num; i++) {
@@ -164,6 +174,8 @@ void hm2_bspi_write(struct hostmot2 *hm2)
 
 		if (b->cd_dirty)
 			write_descriptors(hm2, i);
+		if (b->active)		/* late replies of a short cycle would misalign the next */
+			hm2_write_now(hm2, hm2_md_addr(hm2->bspi.md, REG_COUNT, i), &zero, 4);
 		for (k = 0; k < b->num_pending; k++)
 			hm2_write_now(hm2, fifo + 4 * b->pending_chan[k], &b->pending[k], 4);
 		b->num_pending = 0;
@@ -172,6 +184,7 @@ void hm2_bspi_write(struct hostmot2 *hm2)
 		call(b, &b->write_fn, &b->write_data);
 		for (k = 0; k < b->num_frames; k++)
 			hm2_write_now(hm2, fifo + 4 * b->frame_chan[k], &b->frame_wr[k], 4);
+		b->sent = 1;
 	}
 }
 
@@ -247,6 +260,7 @@ int hm2_tram_add_bspi_frame(const char *name, int chan, rtapi_u32 **wbuf, rtapi_
 	}
 	b->frame_chan[b->num_frames] = chan;
 	b->frame_echo[b->num_frames] = !(b->cd[chan] & 0x80000000u);	/* set up the channel first */
+	b->num_echo += b->frame_echo[b->num_frames];
 	b->frame_wr[b->num_frames] = 0;
 	b->frame_rd[b->num_frames] = 0;
 	*wbuf = &b->frame_wr[b->num_frames];
@@ -315,7 +329,7 @@ int hm2_bspi_release(const char *name)
 	hm2_mb();
 	for (waits = 0; b->in_callback && waits < 100000; waits++)
 		rtapi_delay(10000);	/* a callback in progress finishes within a cycle */
-	b->num_frames = 0;
+	b->num_frames = b->num_echo = 0;
 	b->read_data = b->write_data = 0;
 	return 0;
 }

@@ -100,24 +100,31 @@ static void bspi_start_head(struct sim_bspi *b, rtapi_u64 now)
 		b->busy_until = now + frame_ticks(b->cd[b->tx_cd[0] & 15]);
 }
 
+/* the head frame goes out: its reply (unless no-echo) into the receive FIFO */
+static void bspi_shift_head(struct hm2_sim_model *m, int i)
+{
+	struct sim_bspi *b = &m->bspi[i];
+	rtapi_u32 cd = b->cd[b->tx_cd[0] & 15], data = b->tx[0];
+	int bits = (cd & 0x3F) + 1, k;
+	rtapi_u32 mask = bits >= 32 ? 0xFFFFFFFFu : (1u << bits) - 1, miso = 0;
+
+	if (i == 0 && m->layout->bspi_7i65)
+		miso = card_transfer(m, (cd >> 16) & 0xF, data & mask) & mask;
+	if (!(cd & 0x80000000u) && b->rx_n < SIM_FIFO)
+		b->rx[b->rx_n++] = miso;
+	for (k = 1; k < b->tx_n; k++) {
+		b->tx[k - 1] = b->tx[k];
+		b->tx_cd[k - 1] = b->tx_cd[k];
+	}
+	b->tx_n--;
+}
+
 static void bspi_advance(struct hm2_sim_model *m, int i)
 {
 	struct sim_bspi *b = &m->bspi[i];
 
 	while (b->tx_n && m->ticks >= b->busy_until) {
-		rtapi_u32 cd = b->cd[b->tx_cd[0] & 15], data = b->tx[0];
-		int bits = (cd & 0x3F) + 1, k;
-		rtapi_u32 mask = bits >= 32 ? 0xFFFFFFFFu : (1u << bits) - 1, miso = 0;
-
-		if (i == 0 && m->layout->bspi_7i65)
-			miso = card_transfer(m, (cd >> 16) & 0xF, data & mask) & mask;
-		if (!(cd & 0x80000000u) && b->rx_n < SIM_FIFO)
-			b->rx[b->rx_n++] = miso;
-		for (k = 1; k < b->tx_n; k++) {
-			b->tx[k - 1] = b->tx[k];
-			b->tx_cd[k - 1] = b->tx_cd[k];
-		}
-		b->tx_n--;
+		bspi_shift_head(m, i);
 		bspi_start_head(b, b->busy_until);
 	}
 }
@@ -154,6 +161,12 @@ static int bspi_write(struct hm2_sim_model *m, rtapi_u32 addr, rtapi_u32 v)
 		return 0;
 	b = &m->bspi[i];
 	if (r == 0) {			/* push data with its channel descriptor number */
+		if (b->tx_n == SIM_FIFO) {
+			/* a burst longer than the FIFO: on the card the first frames go out
+			 * while the host is still writing the rest */
+			bspi_shift_head(m, i);
+			bspi_start_head(b, m->ticks);
+		}
 		if (b->tx_n < SIM_FIFO) {
 			b->tx[b->tx_n] = v;
 			b->tx_cd[b->tx_n] = w;
