@@ -92,6 +92,16 @@ static const char *module_name(int gtag, int unit, char *buf, int len)
 	return buf;
 }
 
+/* <board>.<alias>.<param> names <board>.<io>.<param> */
+static int alias_io_param(struct hostmot2 *hm2, const char *io, const char *alias, const char *param)
+{
+	char n[HAL_NAME_LEN + 1], a[HAL_NAME_LEN + 1];
+
+	rtapi_snprintf(n, sizeof(n), "%s.%s", io, param);
+	rtapi_snprintf(a, sizeof(a), "%s.%s", alias, param);
+	return hm2_alias_param(hm2, hm2->llio->name, n, a);
+}
+
 static int same_function(const struct hm2_pin *a, const struct hm2_pin *b)
 {
 	return a->gtag == b->gtag && a->pd.sec_unit == b->pd.sec_unit && a->pd.sec_pin == b->pd.sec_pin;
@@ -119,25 +129,14 @@ int hm2_alias_module_pins(struct hostmot2 *hm2)
 			if (j < i && same_function(p, &hm2->pin[j]))
 				k++;
 		}
-		rtapi_snprintf(io, sizeof(io), "%s.gpio.%03d", hm2->llio->name, i);
+		rtapi_snprintf(io, sizeof(io), "gpio.%03d", i);
 		if (shared)
 			rtapi_snprintf(alias, sizeof(alias), "%s.%d.%s", mod, k, pin);
 		else
 			rtapi_snprintf(alias, sizeof(alias), "%s.%s", mod, pin);
-		{
-			char full[HAL_NAME_LEN + 1], a[HAL_NAME_LEN + 1];
-
-			rtapi_snprintf(full, sizeof(full), "%s.invert_output", io);
-			rtapi_snprintf(a, sizeof(a), "%s.%s.invert_output", hm2->llio->name, alias);
-			rc = hal_param_alias(full, a);
-			if (!rc) {
-				rtapi_snprintf(full, sizeof(full), "%s.is_opendrain", io);
-				rtapi_snprintf(a, sizeof(a), "%s.%s.is_opendrain", hm2->llio->name, alias);
-				rc = hal_param_alias(full, a);
-			}
-			if (rc)
-				HM2_ERR(hm2, "cannot create the alias %s (%d)", a, rc);
-		}
+		rc = alias_io_param(hm2, io, alias, "invert_output");
+		if (!rc)
+			rc = alias_io_param(hm2, io, alias, "is_opendrain");
 	}
 	return rc;
 }
