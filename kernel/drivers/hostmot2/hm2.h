@@ -16,8 +16,19 @@
 #include "hm2_llio.h"
 #include "hm2_idrom.h"
 #include "hm2_config.h"
+#include "hm2_serial.h"
+
+/* the sub-driver API (hm2_serial.h) is exported from the files that define it;
+ * rtapi_app.h, which defines EXPORT_SYMBOL, belongs to hm2_core.c alone */
+#if defined(__KERNEL__)
+#include <linux/export.h>
+#elif !defined(EXPORT_SYMBOL)
+#define EXPORT_SYMBOL(sym)
+#endif
 
 #define HM2_ERRLEN 160
+/* orders a sub-driver's updates against the board's thread (both flavors) */
+#define hm2_mb() __atomic_thread_fence(__ATOMIC_SEQ_CST)
 #define HM2_TRAM_MAX 32
 
 void hm2_msg(const struct hm2_llio *llio, int level, const char *fmt, ...)
@@ -115,9 +126,12 @@ struct hm2_encoder_inst {
 	int prev_qe_enable;
 };
 
-struct hm2_encoder {
+struct hm2_encoder {			/* plain (GTag 4) or muxed (GTag 12): never both */
 	const struct hm2_md *md;
 	int num;
+	int muxed;
+	hal_float_t *muxed_skew;	/* pin, ns; muxed version > 3 only */
+	rtapi_u32 skew_ticks, written_skew;	/* filter-rate bits 31..28 */
 	struct hm2_encoder_inst *inst;
 	hal_u32_t *sample_frequency;	/* pin */
 	hal_bit_t *hires_timestamp;	/* pin */
@@ -187,6 +201,68 @@ struct hm2_dpll {
 	int force;
 };
 
+struct hm2_tppwm_inst {
+	hal_float_t *a_value, *b_value, *c_value;
+	hal_bit_t *enable, *fault;
+	hal_u32_t deadtime;		/* ns */
+	hal_float_t scale, sample_time;
+	hal_bit_t fault_invert;
+	rtapi_u32 setup, w_setup, w_enable;	/* setup: computed in _fp.c */
+};
+
+struct hm2_tppwm {
+	const struct hm2_md *md;
+	int num;
+	struct hm2_tppwm_inst *inst;
+	hal_u32_t frequency;		/* param, Hz */
+	rtapi_u32 w_frequency, dds;
+	rtapi_u32 *value_wr, *status_rd;	/* TRAM */
+	int force;
+};
+
+/* one BSPI instance; the frames' words live here (not in the TRAM buffers) because
+ * sub-drivers add them after the board registered */
+struct hm2_bspi_inst {
+	char name[HAL_NAME_LEN + 1];	/* "hm2_5i23.0.bspi.0" */
+	struct hostmot2 *hm2;
+	rtapi_u32 cd[16];
+	int cd_dirty;			/* descriptors to (re)write at the next write() */
+	rtapi_u32 frame_wr[HM2_BSPI_FRAMES], frame_rd[HM2_BSPI_FRAMES];
+	int frame_chan[HM2_BSPI_FRAMES];
+	int frame_echo[HM2_BSPI_FRAMES];	/* a reply word comes back (descriptor bit 31 clear) */
+	int num_frames;
+	volatile int active;		/* frames registered and allocated: sent every cycle */
+	int sent;			/* write() sent them: read() takes the replies */
+	int num_echo;			/* frames with a reply */
+	rtapi_u32 count_rd;		/* FIFO counts, read before the replies */
+	rtapi_u32 pending[16], pending_chan[16];	/* hm2_bspi_write_chan words */
+	volatile int num_pending;
+	int (*volatile read_fn)(void *);
+	int (*volatile write_fn)(void *);
+	void *volatile read_data, *volatile write_data;
+	volatile int in_callback;
+};
+
+struct hm2_bspi {
+	const struct hm2_md *md;
+	int num;
+	struct hm2_bspi_inst *inst;
+};
+
+struct hm2_uart_inst {
+	char name[HAL_NAME_LEN + 1];	/* "hm2_5i23.0.uart.0" */
+	struct hostmot2 *hm2;
+	rtapi_u32 bitrate;
+	rtapi_s32 tx_mode, rx_mode;
+	volatile int dirty;		/* setup to write at the next write() */
+};
+
+struct hm2_uart {
+	const struct hm2_md *tx_md, *rx_md;
+	int num;
+	struct hm2_uart_inst *inst;
+};
+
 struct hostmot2 {
 	struct hm2_llio *llio;
 	struct hm2_config cfg;
@@ -209,6 +285,9 @@ struct hostmot2 {
 	struct hm2_stepgen stepgen;
 	struct hm2_pwmgen pwmgen;
 	struct hm2_dpll dpll;
+	struct hm2_tppwm tppwm;
+	struct hm2_bspi bspi;
+	struct hm2_uart uart;
 };
 
 /* core services for the module files */
@@ -261,6 +340,7 @@ void hm2_encoder_write(struct hostmot2 *hm2);
 void hm2_encoder_init_fp(struct hostmot2 *hm2);
 void hm2_encoder_read_fp(struct hostmot2 *hm2, long period);
 void hm2_encoder_prepare_fp(struct hostmot2 *hm2);	/* after the first read: count = 0 */
+void hm2_encoder_write_fp(struct hostmot2 *hm2);	/* muxed-skew ns -> clocks */
 
 int hm2_stepgen_parse(struct hostmot2 *hm2, const struct hm2_md *md);
 int hm2_stepgen_export(struct hostmot2 *hm2);
@@ -284,5 +364,39 @@ void hm2_dpll_force_write(struct hostmot2 *hm2);
 void hm2_dpll_init_fp(struct hostmot2 *hm2);
 void hm2_dpll_read_fp(struct hostmot2 *hm2);
 void hm2_dpll_write_fp(struct hostmot2 *hm2, long period);	/* computes, then writes */
+
+int hm2_tppwm_parse(struct hostmot2 *hm2, const struct hm2_md *md);
+int hm2_tppwm_export(struct hostmot2 *hm2);
+void hm2_tppwm_force_write(struct hostmot2 *hm2);
+void hm2_tppwm_read(struct hostmot2 *hm2);
+void hm2_tppwm_write(struct hostmot2 *hm2);
+rtapi_u32 hm2_tppwm_deadtime_reg(struct hostmot2 *hm2, int i);
+void hm2_tppwm_init_fp(struct hostmot2 *hm2);
+void hm2_tppwm_prepare_write_fp(struct hostmot2 *hm2);
+
+/* BSPI and UART: the sub-driver API is hm2_serial.h; these are the core's verbs */
+int hm2_bspi_parse(struct hostmot2 *hm2, const struct hm2_md *md);
+int hm2_bspi_export(struct hostmot2 *hm2);	/* registers the names */
+void hm2_bspi_force_write(struct hostmot2 *hm2);
+int hm2_bspi_request_reads(struct hostmot2 *hm2);	/* with the per-cycle reads */
+void hm2_bspi_read(struct hostmot2 *hm2);	/* sub-drivers' read functions */
+void hm2_bspi_write(struct hostmot2 *hm2);	/* their write functions, then the frames */
+void hm2_bspi_cleanup(struct hostmot2 *hm2);	/* unregister: forget the names */
+
+int hm2_uart_parse(struct hostmot2 *hm2, const struct hm2_md *md);	/* TX and RX MDs */
+int hm2_uart_allocate(struct hostmot2 *hm2);	/* after all MDs: count and pins */
+int hm2_uart_export(struct hostmot2 *hm2);
+void hm2_uart_force_write(struct hostmot2 *hm2);
+void hm2_uart_write(struct hostmot2 *hm2);
+void hm2_uart_cleanup(struct hostmot2 *hm2);
+
+/* A second name, prefix.alias, for the pin or param prefix.name (hal_pin_alias). */
+int hm2_alias_pin(struct hostmot2 *hm2, const char *prefix, const char *name, const char *alias);
+int hm2_alias_param(struct hostmot2 *hm2, const char *prefix, const char *name, const char *alias);
+/* hostmot2.txt's aliases for module output pins: <module>.<NN>.<pin>.invert_output
+ * and .is_opendrain name the gpio.NNN params (hm2_alias.c). */
+int hm2_alias_module_pins(struct hostmot2 *hm2);
+/* A read done with the per-cycle reads: queued when the board batches. */
+int hm2_tram_extra_read(struct hostmot2 *hm2, rtapi_u32 addr, void *buf, int size);
 
 #endif /* HM2_H */

@@ -31,7 +31,9 @@ static int is_known_unsupported(int gtag)
 {
 	return hm2_gtag_name(gtag) && gtag != HM2_GTAG_WATCHDOG && gtag != HM2_GTAG_IOPORT &&
 	       gtag != HM2_GTAG_ENCODER && gtag != HM2_GTAG_STEPGEN && gtag != HM2_GTAG_PWMGEN &&
-	       gtag != HM2_GTAG_HM2DPLL && gtag != HM2_GTAG_LED;
+	       gtag != HM2_GTAG_HM2DPLL && gtag != HM2_GTAG_LED && gtag != HM2_GTAG_MUXED_ENCODER &&
+	       gtag != HM2_GTAG_TPPWM && gtag != HM2_GTAG_BSPI && gtag != HM2_GTAG_UART_TX &&
+	       gtag != HM2_GTAG_UART_RX;
 }
 
 static int read_words(struct hostmot2 *hm2, rtapi_u32 addr, rtapi_u32 *w, int n)
@@ -173,7 +175,12 @@ static int parse_module_descriptors(struct hostmot2 *hm2)
 			rc = 0;
 			break;
 		case HM2_GTAG_WATCHDOG: rc = hm2_watchdog_parse(hm2, md); break;
-		case HM2_GTAG_ENCODER: rc = hm2_encoder_parse(hm2, md); break;
+		case HM2_GTAG_ENCODER:
+		case HM2_GTAG_MUXED_ENCODER: rc = hm2_encoder_parse(hm2, md); break;
+		case HM2_GTAG_TPPWM: rc = hm2_tppwm_parse(hm2, md); break;
+		case HM2_GTAG_BSPI: rc = hm2_bspi_parse(hm2, md); break;
+		case HM2_GTAG_UART_TX:
+		case HM2_GTAG_UART_RX: rc = hm2_uart_parse(hm2, md); break;
 		case HM2_GTAG_STEPGEN: rc = hm2_stepgen_parse(hm2, md); break;
 		case HM2_GTAG_PWMGEN: rc = hm2_pwmgen_parse(hm2, md); break;
 		case HM2_GTAG_LED: rc = hm2_led_parse(hm2, md); break;
@@ -191,21 +198,22 @@ static int parse_module_descriptors(struct hostmot2 *hm2)
 			HM2_INFO(hm2, "module %s: %u instances in the firmware", hm2_gtag_name(md->gtag),
 				 md->instances);
 	}
-	return 0;
+	return hm2_uart_allocate(hm2);
 }
 
 /* Config keywords naming modules this firmware does not have, or that this driver
  * does not drive: asking for instances of them cannot be satisfied. */
 static int check_counts(struct hostmot2 *hm2)
 {
-	static const struct { int key, gtag; } map[] = {
-		{ HM2_NUM_3PWMGENS, HM2_GTAG_TPPWM }, { HM2_NUM_RCPWMGENS, HM2_GTAG_RCPWMGEN },
-		{ HM2_NUM_RESOLVERS, HM2_GTAG_RESOLVER }, { HM2_NUM_BSPIS, HM2_GTAG_BSPI },
-		{ HM2_NUM_UARTS, HM2_GTAG_UART_TX }, { HM2_NUM_PKTUARTS, HM2_GTAG_PKTUART_TX },
-		{ HM2_NUM_INMS, HM2_GTAG_INM }, { HM2_NUM_INMUXS, HM2_GTAG_INMUX },
-		{ HM2_NUM_OUTMS, HM2_GTAG_OUTM }, { HM2_NUM_SSRS, HM2_GTAG_SSR },
-		{ HM2_NUM_ONESHOTS, HM2_GTAG_ONESHOT }, { HM2_NUM_PERIODMS, HM2_GTAG_PERIODM },
-		{ HM2_NUM_XY2MODS, HM2_GTAG_XY2MOD },
+	/* driven: the module's parse checked the count; only "none at all" is left */
+	static const struct { int key, gtag, driven; } map[] = {
+		{ HM2_NUM_3PWMGENS, HM2_GTAG_TPPWM, 1 }, { HM2_NUM_RCPWMGENS, HM2_GTAG_RCPWMGEN, 0 },
+		{ HM2_NUM_RESOLVERS, HM2_GTAG_RESOLVER, 0 }, { HM2_NUM_BSPIS, HM2_GTAG_BSPI, 1 },
+		{ HM2_NUM_UARTS, HM2_GTAG_UART_TX, 1 }, { HM2_NUM_PKTUARTS, HM2_GTAG_PKTUART_TX, 0 },
+		{ HM2_NUM_INMS, HM2_GTAG_INM, 0 }, { HM2_NUM_INMUXS, HM2_GTAG_INMUX, 0 },
+		{ HM2_NUM_OUTMS, HM2_GTAG_OUTM, 0 }, { HM2_NUM_SSRS, HM2_GTAG_SSR, 0 },
+		{ HM2_NUM_ONESHOTS, HM2_GTAG_ONESHOT, 0 }, { HM2_NUM_PERIODMS, HM2_GTAG_PERIODM, 0 },
+		{ HM2_NUM_XY2MODS, HM2_GTAG_XY2MOD, 0 },
 	};
 	char err[HM2_ERRLEN];
 	unsigned k;
@@ -221,7 +229,7 @@ static int check_counts(struct hostmot2 *hm2)
 			HM2_ERR(hm2, "%s", err);
 			return -EINVAL;
 		}
-		if (have && hm2->cfg.num[map[k].key] > 0) {
+		if (have && !map[k].driven && hm2->cfg.num[map[k].key] > 0) {
 			HM2_ERR(hm2, "config: %s=%d: this driver does not drive that module yet",
 				hm2_config_count_name(map[k].key), hm2->cfg.num[map[k].key]);
 			return -EINVAL;
@@ -264,6 +272,9 @@ static void force_write_all(struct hostmot2 *hm2)
 	hm2_encoder_force_write(hm2);
 	hm2_pwmgen_force_write(hm2);
 	hm2_stepgen_force_write(hm2);
+	hm2_tppwm_force_write(hm2);
+	hm2_bspi_force_write(hm2);
+	hm2_uart_force_write(hm2);
 	hm2_dpll_force_write(hm2);
 	hm2->led.force = 1;
 	hm2_led_write(hm2);
@@ -299,6 +310,8 @@ static void hm2_read(void *arg, long period)
 	hm2_ioport_read(hm2);
 	hm2_encoder_read_fp(hm2, period);
 	hm2_stepgen_read_fp(hm2, period);
+	hm2_bspi_read(hm2);
+	hm2_tppwm_read(hm2);
 	hm2_dpll_read_fp(hm2);
 	hm2_raw_read(hm2);
 }
@@ -322,8 +335,13 @@ static void hm2_write(void *arg, long period)
 	hm2_ioport_write(hm2);
 	hm2_pwmgen_prepare_write_fp(hm2);
 	hm2_stepgen_prepare_write_fp(hm2, period);
+	hm2_tppwm_prepare_write_fp(hm2);
+	hm2_encoder_write_fp(hm2);
 	hm2_tram_write(hm2);
+	hm2_bspi_write(hm2);
 	hm2_pwmgen_write(hm2);
+	hm2_uart_write(hm2);
+	hm2_tppwm_write(hm2);
 	hm2_stepgen_write(hm2);
 	hm2_encoder_write(hm2);
 	hm2_dpll_write_fp(hm2, period);
@@ -392,14 +410,35 @@ static int export_all(struct hostmot2 *hm2)
 	if (!rc) rc = hm2_encoder_export(hm2);
 	if (!rc) rc = hm2_stepgen_export(hm2);
 	if (!rc) rc = hm2_pwmgen_export(hm2);
+	if (!rc) rc = hm2_tppwm_export(hm2);
+	if (!rc) rc = hm2_bspi_export(hm2);
+	if (!rc) rc = hm2_uart_export(hm2);
 	if (!rc) rc = hm2_led_export(hm2);
 	if (!rc) rc = hm2_raw_export(hm2);
+	if (!rc) rc = hm2_alias_module_pins(hm2);
 	if (rc)
 		HM2_ERR(hm2, "cannot create the HAL objects (%d)", rc);
 	return rc;
 }
 
+static int register_board(struct hm2_llio *llio, const char *config);
+
+/* The serial modules put their names in lists sub-drivers search: a board that
+ * fails half way takes them out again. */
 int hm2_register(struct hm2_llio *llio, const char *config)
+{
+	int rc = register_board(llio, config);
+
+	if (rc && llio && llio->hm2) {
+		hm2_bspi_cleanup(llio->hm2);
+		hm2_uart_cleanup(llio->hm2);
+		llio->hm2 = 0;
+	}
+	return rc;
+}
+EXPORT_SYMBOL(hm2_register);
+
+static int register_board(struct hm2_llio *llio, const char *config)
 {
 	struct hostmot2 *hm2;
 	char err[HM2_ERRLEN];
@@ -449,6 +488,7 @@ int hm2_register(struct hm2_llio *llio, const char *config)
 	hm2_encoder_init_fp(hm2);
 	hm2_stepgen_init_fp(hm2);
 	hm2_pwmgen_init_fp(hm2);
+	hm2_tppwm_init_fp(hm2);
 	hm2_dpll_init_fp(hm2);
 	rtapi_fpu_end();
 	hm2_ioport_print_pins(hm2);
@@ -480,7 +520,6 @@ int hm2_register(struct hm2_llio *llio, const char *config)
 		 hm2->pwmgen.num, hm2->watchdog.md ? ", watchdog" : "", hm2->dpll.md ? ", dpll" : "");
 	return 0;
 }
-EXPORT_SYMBOL(hm2_register);
 
 void hm2_unregister(struct hm2_llio *llio)
 {
@@ -491,6 +530,8 @@ void hm2_unregister(struct hm2_llio *llio)
 	/* the thread may still run read/write until the board's component goes away:
 	 * from now on they return at once, and the bite is written directly */
 	hm2->closing = 1;
+	hm2_bspi_cleanup(hm2);
+	hm2_uart_cleanup(hm2);
 	if (!hm2->io_error)
 		hm2_watchdog_bite_now(hm2);
 	llio->hm2 = 0;

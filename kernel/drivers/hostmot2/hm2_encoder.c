@@ -1,8 +1,12 @@
 /* SPDX-License-Identifier: GPL-2.0-or-later */
-/* hm2_encoder.c - quadrature encoder (GTag 4, hostmot2.md 7.4): MD checks, HAL
- * objects and the integer register writes (control words, timestamp divider,
- * filter rate, DPLL timer select). The counting, position and velocity arithmetic
- * is in hm2_encoder_fp.c. */
+/* hm2_encoder.c - quadrature encoder (GTag 4) and muxed encoder (GTag 12), hostmot2.md
+ * 7.4: MD checks, HAL objects and the integer register writes (control words,
+ * timestamp divider, filter rate with the mux skew, DPLL timer select). The counting,
+ * position and velocity arithmetic is in hm2_encoder_fp.c. Both kinds have the same
+ * registers and the same HAL names (encoder.NN); a muxed unit's pin set carries two
+ * encoders (2u and 2u + 1), chosen by the global select pins, and the module pins are
+ * muxed-sample-frequency and muxed-skew instead of sample-frequency. Like LinuxCNC,
+ * a firmware with both kinds is refused. */
 #include "rtapi.h"
 #include "hal.h"
 #include "hm2.h"
@@ -30,6 +34,10 @@ int hm2_encoder_parse(struct hostmot2 *hm2, const struct hm2_md *md)
 	char err[HM2_ERRLEN];
 	int n, rc;
 
+	if (e->md) {
+		HM2_ERR(hm2, "inconsistent firmware: it has both an encoder and a muxed encoder module");
+		return -EINVAL;
+	}
 	if (hm2_md_is_consistent(md, err, sizeof(err))) {
 		HM2_ERR(hm2, "%s", err);
 		return -EINVAL;
@@ -39,8 +47,11 @@ int hm2_encoder_parse(struct hostmot2 *hm2, const struct hm2_md *md)
 		HM2_ERR(hm2, "%s", err);
 		return n;
 	}
-	if (md->version == 1)
+	e->muxed = md->gtag == HM2_GTAG_MUXED_ENCODER;
+	if (!e->muxed && md->version == 1)
 		HM2_WARN(hm2, "encoder: firmware version 1 has a buggy index; please upgrade");
+	if (e->muxed && md->version == 2)
+		HM2_WARN(hm2, "muxed encoder: firmware version 2 gives bad velocity; please upgrade");
 	e->md = md;
 	e->num = n;
 	if (!n)
@@ -48,7 +59,13 @@ int hm2_encoder_parse(struct hostmot2 *hm2, const struct hm2_md *md)
 	e->inst = hal_malloc(n * sizeof(*e->inst));
 	if (!e->inst)
 		return -ENOMEM;
-	hm2_pins_allocate(hm2, HM2_GTAG_ENCODER, n);
+	if (e->muxed) {
+		/* two encoders per physical pin set; the select pins serve them all */
+		hm2_pins_allocate(hm2, HM2_GTAG_MUXED_ENCODER, (n + 1) / 2);
+		hm2_pins_allocate(hm2, HM2_GTAG_MUXED_ENCODER_SEL, n);
+	} else {
+		hm2_pins_allocate(hm2, HM2_GTAG_ENCODER, n);
+	}
 	/* TSCount first, so the counters are never older than the timestamp */
 	rc = hm2_tram_add_read(hm2, hm2_md_addr(md, REG_TSCOUNT, 0), 4, &e->tscount_rd);
 	if (!rc)
@@ -73,6 +90,7 @@ int hm2_encoder_export(struct hostmot2 *hm2)
 		rtapi_snprintf(p, sizeof(p), "%s.encoder.%02d", b, i);
 		rc = hal_pin_s32_newf(HAL_OUT, &x->count, id, "%s.count", p);
 		if (!rc) rc = hal_pin_s32_newf(HAL_OUT, &x->rawcounts, id, "%s.rawcounts", p);
+		if (!rc) rc = hm2_alias_pin(hm2, p, "rawcounts", "rawcount");	/* the EMC2 page's name */
 		if (!rc) rc = hal_pin_float_newf(HAL_OUT, &x->position, id, "%s.position", p);
 		if (!rc) rc = hal_pin_float_newf(HAL_OUT, &x->position_interpolated, id,
 						 "%s.position-interpolated", p);
@@ -99,7 +117,10 @@ int hm2_encoder_export(struct hostmot2 *hm2)
 		x->written_control = 0xFFFFFFFFu;	/* written at the first write() */
 	}
 	if (!rc)
-		rc = hal_pin_u32_newf(HAL_IN, &e->sample_frequency, id, "%s.encoder.sample-frequency", b);
+		rc = hal_pin_u32_newf(HAL_IN, &e->sample_frequency, id, "%s.encoder.%ssample-frequency", b,
+				      e->muxed ? "muxed-" : "");
+	if (!rc && e->muxed && (e->md->version & 0x7F) > 3)
+		rc = hal_pin_float_newf(HAL_IN, &e->muxed_skew, id, "%s.encoder.muxed-skew", b);
 	if (!rc)
 		rc = hal_pin_bit_newf(HAL_IN, &e->hires_timestamp, id, "%s.encoder.hires-timestamp", b);
 	if (!rc && hm2->dpll.md) {
@@ -108,7 +129,7 @@ int hm2_encoder_export(struct hostmot2 *hm2)
 	}
 	if (rc)
 		return rc;
-	*e->sample_frequency = 25000000;
+	*e->sample_frequency = e->muxed ? 8000000 : 25000000;
 	e->timer_number = -1;
 	return 0;
 }
@@ -150,13 +171,17 @@ static void write_module_regs(struct hostmot2 *hm2, int force)
 		hm2_write_now(hm2, hm2_md_addr(e->md, REG_TSDIV, 0), &e->tsdiv, 4);
 		e->written_hires = hires;
 	}
-	if (force || *e->sample_frequency != e->written_sample_frequency) {
+	if (force || *e->sample_frequency != e->written_sample_frequency ||
+	    e->skew_ticks != e->written_skew) {
 		rtapi_u32 f = *e->sample_frequency ? *e->sample_frequency : 1;
 		rtapi_u32 q = clk / f;
 
 		v = q <= 1 ? 0xFFF : (q - 2 > 0xFFE ? 0xFFE : q - 2);
+		if (e->muxed_skew)
+			v |= e->skew_ticks << 28;	/* mux skew, ClockLow periods */
 		hm2_write_now(hm2, hm2_md_addr(e->md, REG_FILTER, 0), &v, 4);
 		e->written_sample_frequency = *e->sample_frequency;
+		e->written_skew = e->skew_ticks;
 	}
 	if (e->has_timer && (force || e->timer_number != e->written_timer)) {
 		int t = e->timer_number;

@@ -141,3 +141,19 @@ void hm2_encoder_read_fp(struct hostmot2 *hm2, long period)
 		*x->quad_error = *x->quad_error_enable && (ctl & CTL_QUAD_ERROR);
 	}
 }
+
+/* muxed-skew (ns) -> ClockLow periods, 0..15, for the filter-rate register */
+void hm2_encoder_write_fp(struct hostmot2 *hm2)
+{
+	struct hm2_encoder *e = &hm2->encoder;
+	double ticks;
+
+	if (!e->num || !e->muxed_skew)
+		return;
+	ticks = *e->muxed_skew * (double)e->md->clock_freq * 1e-9 + 0.5;
+	if (ticks < 0.0)
+		ticks = 0.0;
+	if (ticks > 15.0)
+		ticks = 15.0;
+	e->skew_ticks = (rtapi_u32)ticks;
+}

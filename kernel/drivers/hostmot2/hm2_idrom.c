@@ -166,21 +166,24 @@ struct md_rule {
 	rtapi_u8 num_registers;
 	rtapi_u32 instance_stride;
 	rtapi_u32 multiple_registers;
+	rtapi_u32 alt_instance_stride;	/* also accepted (0: none) */
 };
 
+/* The UART's registers are addressed through the MD's own stride, so besides the
+ * 0x10 of older builds it accepts the 0x40 that current IDROMs offer as stride 1. */
 static const struct md_rule rules[] = {
-	{ HM2_GTAG_WATCHDOG, "watchdog", { 0, 0xFF }, 3, 4, 0x0 },
-	{ HM2_GTAG_IOPORT, "ioport", { 0, 0xFF }, 5, 4, 0x1F },
-	{ HM2_GTAG_LED, "led", { 0, 0xFF }, 1, 4, 0x0 },
-	{ HM2_GTAG_ENCODER, "encoder", { 1, 2, 3, 0x83, 0xFF }, 5, 4, 0x03 },
-	{ HM2_GTAG_MUXED_ENCODER, "muxed encoder", { 2, 3, 4, 0x84, 0xFF }, 5, 4, 0x03 },
-	{ HM2_GTAG_STEPGEN, "stepgen", { 0, 1, 2, 0x42, 0xC2, 0xFF }, 10, 4, 0x1FF },
-	{ HM2_GTAG_PWMGEN, "pwmgen", { 0, 1, 0xFF }, 5, 4, 0x03 },
-	{ HM2_GTAG_TPPWM, "3pwmgen", { 0, 0xFF }, 4, 4, 0x03 },
-	{ HM2_GTAG_HM2DPLL, "dpll", { 0, 0xFF }, 7, 4, 0x0 },
-	{ HM2_GTAG_BSPI, "bspi", { 0, 0xFF }, 3, 0x40, 0x07 },
-	{ HM2_GTAG_UART_TX, "uart tx", { 0, 0xFF }, 4, 0x10, 0x0F },
-	{ HM2_GTAG_UART_RX, "uart rx", { 0, 0xFF }, 4, 0x10, 0x0F },
+	{ HM2_GTAG_WATCHDOG, "watchdog", { 0, 0xFF }, 3, 4, 0x0, 0 },
+	{ HM2_GTAG_IOPORT, "ioport", { 0, 0xFF }, 5, 4, 0x1F, 0 },
+	{ HM2_GTAG_LED, "led", { 0, 0xFF }, 1, 4, 0x0, 0 },
+	{ HM2_GTAG_ENCODER, "encoder", { 1, 2, 3, 0x83, 0xFF }, 5, 4, 0x03, 0 },
+	{ HM2_GTAG_MUXED_ENCODER, "muxed encoder", { 2, 3, 4, 0x84, 0xFF }, 5, 4, 0x03, 0 },
+	{ HM2_GTAG_STEPGEN, "stepgen", { 0, 1, 2, 0x42, 0xC2, 0xFF }, 10, 4, 0x1FF, 0 },
+	{ HM2_GTAG_PWMGEN, "pwmgen", { 0, 1, 0xFF }, 5, 4, 0x03, 0 },
+	{ HM2_GTAG_TPPWM, "3pwmgen", { 0, 0xFF }, 4, 4, 0x03, 0 },
+	{ HM2_GTAG_HM2DPLL, "dpll", { 0, 0xFF }, 7, 4, 0x0, 0 },
+	{ HM2_GTAG_BSPI, "bspi", { 0, 0xFF }, 3, 0x40, 0x07, 0 },
+	{ HM2_GTAG_UART_TX, "uart tx", { 0, 0xFF }, 4, 0x10, 0x0F, 0x40 },
+	{ HM2_GTAG_UART_RX, "uart rx", { 0, 0xFF }, 4, 0x10, 0x0F, 0x40 },
 };
 
 static const struct md_rule *rule_for(int gtag)
@@ -214,7 +217,9 @@ int hm2_md_is_consistent(const struct hm2_md *md, char *err, int errlen)
 		rtapi_snprintf(err, errlen, "%s: unsupported module version %u", r->name, md->version);
 		return -EINVAL;
 	}
-	if (md->num_registers != r->num_registers || md->instance_stride != r->instance_stride ||
+	if (md->num_registers != r->num_registers ||
+	    (md->instance_stride != r->instance_stride &&
+	     (!r->alt_instance_stride || md->instance_stride != r->alt_instance_stride)) ||
 	    md->multiple_registers != r->multiple_registers) {
 		rtapi_snprintf(err, errlen, "%s: inconsistent module descriptor: %u registers, instance "
 			       "stride 0x%X, multiple-registers 0x%X (expected %u, 0x%X, 0x%X)", r->name,

@@ -91,6 +91,14 @@ int hm2_ioport_export(struct hostmot2 *hm2)
 	return rc;
 }
 
+/* Outputs of these modules are driven from load on (hostmot2.md 6): a serial bus or
+ * the encoder multiplexer must idle correctly before HAL runs; all other module
+ * outputs wait for the first write(). */
+static int drives_at_load(int gtag)
+{
+	return gtag == HM2_GTAG_BSPI || gtag == HM2_GTAG_UART_TX || gtag == HM2_GTAG_MUXED_ENCODER_SEL;
+}
+
 /* Registers as the HAL settings ask for them now. */
 static void compute(struct hostmot2 *hm2)
 {
@@ -110,7 +118,7 @@ static void compute(struct hostmot2 *hm2)
 			output = p->gpio.is_output;
 		} else {
 			io->alt[p->port] |= m;
-			output = p->dir == HM2_PIN_OUT && io->module_outputs_on;
+			output = p->dir == HM2_PIN_OUT && (io->module_outputs_on || drives_at_load(p->gtag));
 		}
 		if (output) {
 			io->ddr[p->port] |= m;
@@ -200,6 +208,8 @@ static const char *owner_name(int gtag)
 {
 	const char *n = hm2_gtag_name(gtag);
 
+	if (gtag == HM2_GTAG_MUXED_ENCODER_SEL)
+		return "muxed encoder select";
 	return n ? n : "unknown module";
 }
 

@@ -114,7 +114,17 @@ int hm2_tram_flush_writes(struct hostmot2 *hm2)
 	return rc;
 }
 
-/* Queue (or do) every per-cycle read, and the raw-mode read, and send them. */
+/* A read that goes with the per-cycle ones (BSPI replies): queued when batching. */
+int hm2_tram_extra_read(struct hostmot2 *hm2, rtapi_u32 addr, void *buf, int size)
+{
+	struct hm2_llio *llio = hm2->llio;
+
+	return llio->queue_read ? llio->queue_read(llio, addr, buf, size)
+				: hm2_read_now(hm2, addr, buf, size);
+}
+
+/* Queue (or do) every per-cycle read, the raw-mode read and the BSPI replies, and
+ * send them. */
 int hm2_tram_request_reads(struct hostmot2 *hm2)
 {
 	struct hm2_llio *llio = hm2->llio;
@@ -126,12 +136,16 @@ int hm2_tram_request_reads(struct hostmot2 *hm2)
 			rc = hm2_read_now(hm2, t->rd[i].addr, *t->rd[i].buf, t->rd[i].size);
 		if (rc >= 0 && hm2->raw.on)
 			rc = hm2_read_now(hm2, *hm2->raw.read_address & 0xFFFF, &hm2->raw.rd_word, 4);
+		if (rc >= 0)
+			rc = hm2_bspi_request_reads(hm2);
 		return rc < 0 ? rc : 0;
 	}
 	for (i = 0; i < t->num_rd && rc >= 0; i++)
 		rc = llio->queue_read(llio, t->rd[i].addr, *t->rd[i].buf, t->rd[i].size);
 	if (rc >= 0 && hm2->raw.on)
 		rc = llio->queue_read(llio, *hm2->raw.read_address & 0xFFFF, &hm2->raw.rd_word, 4);
+	if (rc >= 0)
+		rc = hm2_bspi_request_reads(hm2);
 	if (rc >= 0)
 		rc = llio->send_queued_reads(llio);
 	if (rc < 0) {

@@ -7,4 +7,5 @@ halcmd loadrt hm2_sim board=5i25 'config="enable_raw"'
 halcmd -s show pin 'hm2_5i25.0.*'
 halcmd -s show param 'hm2_5i25.0.*'
 halcmd list funct 'hm2_5i25.0.*'
+halcmd show alias
 halrun -U

@@ -147,6 +147,28 @@ TEST(Hm2Idrom, ConsistencyRules)
     EXPECT_STREQ(hm2_gtag_name(HM2_GTAG_STEPGEN), "stepgen");
 }
 
+TEST(Hm2Idrom, UartAcceptsEitherInstanceStride)
+{
+    char err[200] = "";
+    hm2_md md{};
+    md.gtag = HM2_GTAG_UART_TX;
+    md.num_registers = 4;
+    md.multiple_registers = 0x0F;
+    for (rtapi_u32 stride : {0x10u, 0x40u}) {
+        md.instance_stride = stride;
+        EXPECT_EQ(hm2_md_is_consistent(&md, err, sizeof err), 0) << err;
+    }
+    md.instance_stride = 4;
+    EXPECT_EQ(hm2_md_is_consistent(&md, err, sizeof err), -EINVAL);
+    md.gtag = HM2_GTAG_BSPI;	// BSPI: 0x40 only
+    md.num_registers = 3;
+    md.multiple_registers = 0x07;
+    md.instance_stride = 0x10;
+    EXPECT_EQ(hm2_md_is_consistent(&md, err, sizeof err), -EINVAL);
+    md.instance_stride = 0x40;
+    EXPECT_EQ(hm2_md_is_consistent(&md, err, sizeof err), 0) << err;
+}
+
 TEST(Hm2Idrom, PinDescriptors)
 {
     char err[200] = "";

@@ -19,7 +19,7 @@ std::unique_ptr<hm2_sim_model> make(const char *board, int fault = SIM_FAULT_NON
 
 TEST(Hm2SimModel, IdromImagePassesTheDriverChecks)
 {
-    for (const char *board : {"5i25", "5i20"}) {
+    for (const char *board : {"5i25", "5i20", "5i23"}) {
         auto m = make(board);
         const sim_layout *l = hm2_sim_layout_find(board);
         char err[200] = "";
@@ -164,6 +164,120 @@ TEST(Hm2SimModel, StepgenAccumulatesTheRate)
     EXPECT_NEAR(steps, -100.0, 0.01);
     hm2_sim_model_write(p, 0x4000, 0x12345678);	// plain register reads back
     EXPECT_EQ(hm2_sim_model_read(p, 0x4000), 0x12345678u);
+}
+
+// 5i23: muxed encoders 2 and 3 share pins 27-29; each counts its own channel (the
+// outside multiplexer's inputs), the data pins show the selected one.
+TEST(Hm2SimModel, MuxedEncodersCountTheirOwnChannel)
+{
+    auto m = make("5i23");
+    hm2_sim_model *p = m.get();
+    const int seq[4][2] = {{1, 0}, {1, 1}, {0, 1}, {0, 0}};
+    long long t = 0;
+    for (int k = 0; k < 6; k++) {
+        p->mux_in[3][0] = seq[k % 4][0];
+        p->mux_in[3][1] = seq[k % 4][1];
+        hm2_sim_model_advance(p, t += 1000);
+    }
+    for (int k = 2; k >= 1; k--) {	// encoder 2 goes down: 00 -> 01 -> 11
+        p->mux_in[2][0] = seq[k][0];
+        p->mux_in[2][1] = seq[k][1];
+        hm2_sim_model_advance(p, t += 1000);
+    }
+    EXPECT_EQ(hm2_sim_model_read(p, 0x350C) & 0xFFFF, 6u);
+    EXPECT_EQ(hm2_sim_model_read(p, 0x3508) & 0xFFFF, 0xFFFEu);	// -2
+    EXPECT_EQ(hm2_sim_model_read(p, 0x3500) & 0xFFFF, 0u);
+    // the data pin of unit 1 carries the selected channel's A
+    int sel = p->mux_sel;
+    EXPECT_EQ(p->ext_in[27], p->mux_in[2 + sel][0]);
+}
+
+// 3pwmgen: an active fault input latches fault and clears enable; enabling clears it.
+TEST(Hm2SimModel, TppwmFaultLatches)
+{
+    auto m = make("5i23");
+    hm2_sim_model *p = m.get();
+    long long t = 0;
+    p->ext_in[55] = 1;			// fault input high: no fault (active low)
+    hm2_sim_model_write(p, 0x4600, 1);
+    hm2_sim_model_advance(p, t += 1000);
+    EXPECT_EQ(hm2_sim_model_read(p, 0x4600), 1u);
+    p->ext_in[55] = 0;
+    hm2_sim_model_advance(p, t += 1000);
+    EXPECT_EQ(hm2_sim_model_read(p, 0x4600), 2u);
+    p->ext_in[55] = 1;
+    hm2_sim_model_advance(p, t += 1000);
+    EXPECT_EQ(hm2_sim_model_read(p, 0x4600), 2u);	// latched
+    hm2_sim_model_write(p, 0x4600, 1);
+    EXPECT_EQ(hm2_sim_model_read(p, 0x4600), 1u);
+}
+
+// BSPI with the 7i65: descriptors #15..#0, frames timed by the bit rate, replies in
+// order, no-echo frames give none; the DAC -> ADC loop; the CPLD; the card watchdog.
+TEST(Hm2SimModel, BspiFramesReachThe7i65)
+{
+    auto m = make("5i23");
+    hm2_sim_model *p = m.get();
+    rtapi_u32 cd[16] = {};
+    cd[0] = 31u | (0x10u << 24);				// CS0 loop-back, 32 bits
+    cd[1] = 23u | (1u << 16) | (0x10u << 24) | (1u << 31);	// CS1 DAC, no echo
+    cd[3] = 15u | (3u << 8) | (3u << 16) | (0x10u << 24);	// CS3 ADC, 16 bits, N = 3
+    cd[4] = 11u | (4u << 16) | (0x10u << 24);		// CS4 CPLD
+    for (int j = 15; j >= 0; j--)
+        hm2_sim_model_write(p, 0x5500, cd[j]);
+    EXPECT_EQ(hm2_sim_model_read(p, 0x5504), cd[1]);
+    long long t = 0;
+    hm2_sim_model_write(p, 0x5400, 0xDEADBEEF);		// loop-back
+    hm2_sim_model_write(p, 0x5404, (2u << 16) | 16383u);	// DAC channel 2 = +5 V
+    hm2_sim_model_write(p, 0x540C, 0x8000u | (2u << 10));	// ADC: next = channel 2
+    hm2_sim_model_write(p, 0x540C, 0x8000u);		// reply: channel 2
+    p->card.din[1] = 1;
+    hm2_sim_model_write(p, 0x5410, 0xA05);			// enables 0 and 2
+    EXPECT_EQ(hm2_sim_model_read(p, 0x5600), 5u << 8);	// 5 frames waiting
+    hm2_sim_model_advance(p, t += 100);			// 4.8 ticks: nothing done yet
+    EXPECT_EQ(hm2_sim_model_read(p, 0x5600) & 0x1F, 0u);
+    hm2_sim_model_advance(p, t += 1000000);
+    EXPECT_EQ(hm2_sim_model_read(p, 0x5600), 4u);		// 4 replies, TX empty
+    EXPECT_EQ(hm2_sim_model_read(p, 0x5400), 0xDEADBEEFu);
+    EXPECT_EQ(hm2_sim_model_read(p, 0x5400) >> 13, 0u);	// ADC reply for channel 0
+    EXPECT_EQ(hm2_sim_model_read(p, 0x5400), (2u << 13) | (16383u / 8));
+    EXPECT_EQ(hm2_sim_model_read(p, 0x5400), 2u);		// CPLD: input 1
+    EXPECT_EQ(p->card.dac[2], 16383);
+    EXPECT_EQ(p->card.enables, 5u);
+    hm2_sim_model_advance(p, t += 60000000);		// 60 ms without the CPLD
+    EXPECT_EQ(p->card.bitten, 1);
+    EXPECT_EQ(p->card.dac[2], 0);
+    EXPECT_EQ(p->card.enables, 0u);
+    hm2_sim_model_write(p, 0x5600, 0);			// any write empties the FIFOs
+    EXPECT_EQ(hm2_sim_model_read(p, 0x5600), 0u);
+}
+
+// UART with a loop-back plug: bytes at the bit rate, 1..4 per word, lost when the
+// RX rate differs.
+TEST(Hm2SimModel, UartLoopsBack)
+{
+    auto m = make("5i23");
+    hm2_sim_model *p = m.get();
+    rtapi_u32 rate = (rtapi_u32)((115200ull << 20) / 48000000u);
+    hm2_sim_model_write(p, 0x6200, rate);
+    hm2_sim_model_write(p, 0x6600, rate);
+    long long t = 0;
+    hm2_sim_model_write(p, 0x600C, 0x44434241u);		// 4 bytes "ABCD"
+    hm2_sim_model_write(p, 0x6000, 0x45u);			// 1 byte "E"
+    EXPECT_EQ(hm2_sim_model_read(p, 0x6100), 5u);
+    hm2_sim_model_advance(p, t += 50000);			// 50 us: not a whole byte yet
+    EXPECT_EQ(hm2_sim_model_read(p, 0x6500), 0u);
+    hm2_sim_model_advance(p, t += 1000000);
+    EXPECT_EQ(hm2_sim_model_read(p, 0x6500), 5u);
+    EXPECT_EQ(hm2_sim_model_read(p, 0x6700) & 0x80u, 0x80u);	// data waiting
+    EXPECT_EQ(hm2_sim_model_read(p, 0x6404), 0x4241u);	// +4: two bytes
+    EXPECT_EQ(hm2_sim_model_read(p, 0x640C), 0x454443u);	// +C: the three left
+    EXPECT_EQ(hm2_sim_model_read(p, 0x6500), 0u);
+    hm2_sim_model_write(p, 0x6600, rate + 1);
+    hm2_sim_model_write(p, 0x6000, 0x46u);
+    hm2_sim_model_advance(p, t += 1000000);
+    EXPECT_EQ(hm2_sim_model_read(p, 0x6500), 0u);
+    EXPECT_EQ(hm2_sim_model_read(p, 0x6700) & 1u, 1u);	// false start
 }
 
 }  // namespace

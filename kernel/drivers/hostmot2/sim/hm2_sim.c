@@ -9,7 +9,10 @@
  * fault= puts one IDROM defect into a board (tests of the driver's refusals).
  * The world outside the card: pins hm2_sim.K.io.NNN.in (what outside devices drive
  * onto IO pin NNN; encoders count from these) and hm2_sim.K.io.NNN.out (the level on
- * the connector), K = board index in this module. Reads are batched (queued and
+ * the connector), K = board index in this module. Boards with muxed encoders have
+ * hm2_sim.K.mux.NN.a/.b/.index (what encoder NN behind the outside multiplexer
+ * drives); a board with a 7i65 on its BSPI has hm2_sim.K.7i65.dac-M (the DAC code,
+ * +-32767 = +-10 V), .enable-M, .watchdog-bitten (outputs) and .digital-in-M. Reads are batched (queued and
  * sent as one request per cycle); hm2_sim.K.bus-words counts the 32-bit
  * words moved; hm2_sim.K.bus-error TRUE makes every transfer fail (hostmot2's
  * io_error recovery). */
@@ -28,7 +31,7 @@ MODULE_DESCRIPTION("Simulated Mesa HostMot2 board for hostmot2");
 #define MAX_QUEUED_WRITE_WORDS 1024
 
 static char *board[MAX_BOARDS];
-RTAPI_MP_ARRAY_STRING(board, MAX_BOARDS, "simulated boards: 5i25 (7i76 step/dir) or 5i20 (SVST8_4)");
+RTAPI_MP_ARRAY_STRING(board, MAX_BOARDS, "simulated boards: 5i25 (7i76 step/dir), 5i20 (SVST8_4), 5i23 (7i65, muxed encoders, 3pwmgen, UART)");
 static char *config[MAX_BOARDS];
 RTAPI_MP_ARRAY_STRING(config, MAX_BOARDS, "hostmot2 config string of each board");
 static char *fault[MAX_BOARDS];
@@ -46,6 +49,9 @@ struct sim_board {
 	hal_bit_t **io_in, **io_out;	/* per IO pin */
 	hal_u32_t *bus_words;
 	hal_bit_t *bus_error;		/* in: every transfer fails (a cable pulled) */
+	hal_bit_t *mux_in[SIM_MAX_INST][3];	/* muxed encoders: A, B, index */
+	hal_s32_t *dac[SIM_7I65_CHANNELS];
+	hal_bit_t *enable[SIM_7I65_CHANNELS], *din[SIM_7I65_INPUTS], *card_bitten;
 	struct queued_read rq[MAX_QUEUE];
 	int num_rq;
 	rtapi_u32 wq_addr[MAX_QUEUED_WRITE_WORDS], wq_val[MAX_QUEUED_WRITE_WORDS];
@@ -65,6 +71,14 @@ static void sync_in(struct sim_board *b)
 
 	for (i = 0; i < m->num_pins; i++)
 		m->ext_in[i] = *b->io_in[i];
+	for (i = 0; i < m->qc[1].num && i < SIM_MAX_INST; i++) {
+		m->mux_in[i][0] = *b->mux_in[i][0];
+		m->mux_in[i][1] = *b->mux_in[i][1];
+		m->mux_in[i][2] = *b->mux_in[i][2];
+	}
+	if (m->layout->bspi_7i65)
+		for (i = 0; i < SIM_7I65_INPUTS; i++)
+			m->card.din[i] = *b->din[i];
 	hm2_sim_model_advance(m, rtapi_get_time());
 	m->transactions++;
 }
@@ -78,6 +92,13 @@ static void sync_out(struct sim_board *b)
 	for (i = 0; i < m->num_pins; i++)
 		*b->io_out[i] = m->level[i];
 	*b->bus_words = m->words_read + m->words_written;
+	if (!m->layout->bspi_7i65)
+		return;
+	for (i = 0; i < SIM_7I65_CHANNELS; i++) {
+		*b->dac[i] = m->card.dac[i];
+		*b->enable[i] = (m->card.enables >> i) & 1;
+	}
+	*b->card_bitten = m->card.bitten;
 }
 
 static int check(rtapi_u32 addr, int size)
@@ -218,6 +239,25 @@ static int export_board(struct sim_board *b, int k)
 		if (!rc)
 			rc = hal_pin_bit_newf(HAL_OUT, &b->io_out[i], comp_id, "hm2_sim.%d.io.%03d.out", k, i);
 	}
+	for (i = 0; i < b->model.qc[1].num && i < SIM_MAX_INST && !rc; i++) {
+		rc = hal_pin_bit_newf(HAL_IN, &b->mux_in[i][0], comp_id, "hm2_sim.%d.mux.%02d.a", k, i);
+		if (!rc)
+			rc = hal_pin_bit_newf(HAL_IN, &b->mux_in[i][1], comp_id, "hm2_sim.%d.mux.%02d.b", k, i);
+		if (!rc)
+			rc = hal_pin_bit_newf(HAL_IN, &b->mux_in[i][2], comp_id, "hm2_sim.%d.mux.%02d.index",
+					      k, i);
+	}
+	if (!b->model.layout->bspi_7i65)
+		return rc;
+	for (i = 0; i < SIM_7I65_CHANNELS && !rc; i++) {
+		rc = hal_pin_s32_newf(HAL_OUT, &b->dac[i], comp_id, "hm2_sim.%d.7i65.dac-%d", k, i);
+		if (!rc)
+			rc = hal_pin_bit_newf(HAL_OUT, &b->enable[i], comp_id, "hm2_sim.%d.7i65.enable-%d", k, i);
+	}
+	for (i = 0; i < SIM_7I65_INPUTS && !rc; i++)
+		rc = hal_pin_bit_newf(HAL_IN, &b->din[i], comp_id, "hm2_sim.%d.7i65.digital-in-%d", k, i);
+	if (!rc)
+		rc = hal_pin_bit_newf(HAL_OUT, &b->card_bitten, comp_id, "hm2_sim.%d.7i65.watchdog-bitten", k);
 	return rc;
 }
 

@@ -14,6 +14,15 @@
 	PD(5, u, 0x86)
 #define PWM(u) PD(6, u, 0x81), PD(6, u, 0x82), PD(6, u, 0x83)
 #define ENC(u) PD(4, u, 1), PD(4, u, 2), PD(4, u, 3)
+#define MUXENC(u) PD(12, u, 1), PD(12, u, 2), PD(12, u, 3)
+#define MUXSEL0 PD(13, 0x80, 0x81)
+#define TPPWM(u) PD(19, u, 0x81), PD(19, u, 0x82), PD(19, u, 0x83), PD(19, u, 0x84), \
+	PD(19, u, 0x85), PD(19, u, 0x86), PD(19, u, 0x87), PD(19, u, 0x08)
+#define BSPI(u) PD(14, u, 0x81), PD(14, u, 0x82), PD(14, u, 0x83), PD(14, u, 0x04), \
+	PD(14, u, 0x85), PD(14, u, 0x86), PD(14, u, 0x87), PD(14, u, 0x88), PD(14, u, 0x89), \
+	PD(14, u, 0x8A), PD(14, u, 0x8B), PD(14, u, 0x8C)
+#define UART(u) PD(9, u, 0x81), PD(9, u, 0x82), PD(10, u, 0x01)
+#define GPIO4 GPIO, GPIO, GPIO, GPIO
 
 /* A 5i25 running the 7i76 step/dir firmware: five step/dir stepgens, a spindle
  * encoder and PWM on P2, the DPLL; P3's 17 pins as GPIO (the real 7i76 field I/O
@@ -61,7 +70,32 @@ static const struct sim_layout layout_5i20 = {
 	},
 };
 
-static const struct sim_layout *const layouts[] = { &layout_5i25, &layout_5i20 };
+/* A 5i23 with a 7i65 servo card on P2's buffered SPI (its DACs, ADC and CPLD), a
+ * UART beside it, eight multiplexed encoders on P3 (four pin sets and a select
+ * line: an outside multiplexer), one three-phase PWM generator on P4. */
+static const struct sim_layout layout_5i23 = {
+	.board = "5i23", .firmware = "7i65 + muxed encoders + 3pwmgen + UART",
+	.idrom_name = "MESA5I23", .ports = 3, .port_width = 24, .num_leds = 2,
+	.connector = { "P2", "P3", "P4" }, .bspi_7i65 = 1,
+	.clock_low = 48000000, .clock_high = 96000000, .fpga_size = 400, .fpga_pins = 208,
+	.md = {
+		{ 2, 0, 1, 1, 0x0C00, 3, 0, 0x0 },		/* watchdog */
+		{ 3, 0, 1, 3, 0x1000, 5, 0, 0x1F },		/* ioport */
+		{ 12, 4, 1, 8, 0x3500, 5, 0, 0x03 },		/* muxed encoder (skew) */
+		{ 19, 0, 2, 1, 0x4500, 4, 0, 0x03 },		/* 3pwmgen */
+		{ 14, 0, 1, 1, 0x5400, 3, 1, 0x07 },		/* bspi, instance stride 0x40 */
+		{ 9, 0, 1, 1, 0x6000, 4, 1, 0x0F },		/* uart tx */
+		{ 10, 0, 1, 1, 0x6400, 4, 1, 0x0F },		/* uart rx */
+		{ 128, 0, 1, 1, 0x0200, 1, 0, 0x0 },		/* led */
+	},
+	.pd = {
+		BSPI(0), UART(0), GPIO4, GPIO4, GPIO,
+		MUXENC(0), MUXENC(1), MUXENC(2), MUXENC(3), MUXSEL0, GPIO4, GPIO4, GPIO, GPIO, GPIO,
+		TPPWM(0), GPIO4, GPIO4, GPIO4, GPIO4,
+	},
+};
+
+static const struct sim_layout *const layouts[] = { &layout_5i25, &layout_5i20, &layout_5i23 };
 
 const struct sim_layout *hm2_sim_layout_find(const char *board)
 {
@@ -75,7 +109,8 @@ const struct sim_layout *hm2_sim_layout_find(const char *board)
 
 const char *hm2_sim_layout_names(void)
 {
-	return "5i25 (7i76 step/dir), 5i20 (SVST8_4 servo)";
+	return "5i25 (7i76 step/dir), 5i20 (SVST8_4 servo), 5i23 (7i65 on BSPI, muxed encoders, "
+	       "3pwmgen, UART)";
 }
 
 static const char *const fault_names[SIM_FAULT_COUNT] = {

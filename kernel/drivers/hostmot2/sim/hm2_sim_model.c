@@ -101,15 +101,19 @@ static void build_idrom(struct hm2_sim_model *m, const struct sim_layout *l, int
 		put(m, IDROM_AT + PD_AT + 4 * i, fault == SIM_FAULT_PD_SENTINEL && i >= 3 ? 0 : l->pd[i]);
 }
 
-/* which IO pins carry each encoder's A/B/index and each stepgen's step/dir */
+/* which IO pins carry each encoder's A/B/index and each stepgen's step/dir; a muxed
+ * unit's data pins serve encoders 2u and 2u + 1 */
 static void find_pins(struct hm2_sim_model *m)
 {
 	const struct sim_layout *l = m->layout;
-	int i;
+	int i, k;
 
+	m->pin_mux_sel = -1;
 	for (i = 0; i < SIM_MAX_INST; i++) {
-		m->enc[i].pin_a = m->enc[i].pin_b = m->enc[i].pin_idx = -1;
+		for (k = 0; k < 2; k++)
+			m->qc[k].enc[i].pin_a = m->qc[k].enc[i].pin_b = m->qc[k].enc[i].pin_idx = -1;
 		m->sg[i].pin_step = m->sg[i].pin_dir = -1;
+		m->tp[i].pin_fault = -1;
 	}
 	for (i = 0; i < m->num_pins; i++) {
 		rtapi_u32 pd = l->pd[i];
@@ -117,16 +121,25 @@ static void find_pins(struct hm2_sim_model *m)
 
 		if (unit >= SIM_MAX_INST)
 			continue;
-		if (tag == 4 && pin == 1)
-			m->enc[unit].pin_a = i;
-		if (tag == 4 && pin == 2)
-			m->enc[unit].pin_b = i;
-		if (tag == 4 && pin == 3)
-			m->enc[unit].pin_idx = i;
+		if ((tag == 4 || tag == 12) && pin >= 1 && pin <= 3) {
+			struct sim_qcount *q = &m->qc[tag == 12];
+			int e = tag == 12 ? 2 * unit : unit;
+
+			for (k = 0; k <= (tag == 12) && e + k < SIM_MAX_INST; k++) {
+				int *slot = pin == 1 ? &q->enc[e + k].pin_a : pin == 2 ? &q->enc[e + k].pin_b
+						     : &q->enc[e + k].pin_idx;
+
+				*slot = i;
+			}
+		}
+		if (tag == 13 && pin == 0x81)
+			m->pin_mux_sel = i;
 		if (tag == 5 && pin == 0x81)
 			m->sg[unit].pin_step = i;
 		if (tag == 5 && pin == 0x82)
 			m->sg[unit].pin_dir = i;
+		if (tag == 19 && pin == 0x08)
+			m->tp[unit].pin_fault = i;
 	}
 }
 
@@ -144,8 +157,29 @@ void hm2_sim_model_init(struct hm2_sim_model *m, const struct sim_layout *l, int
 	d = find_md(l, 2);
 	m->base_watchdog = d ? d->base : 0;
 	d = find_md(l, 4);
-	m->base_encoder = d ? d->base : 0;
-	m->num_encoders = d ? d->instances : 0;
+	m->qc[0].base = d ? d->base : 0;
+	m->qc[0].num = d ? d->instances : 0;
+	d = find_md(l, 12);
+	m->qc[1].base = d ? d->base : 0;
+	m->qc[1].num = d ? d->instances : 0;
+	m->qc[1].muxed = 1;
+	d = find_md(l, 19);
+	m->base_tppwm = d ? d->base : 0;
+	m->num_tppwm = d ? d->instances : 0;
+	d = find_md(l, 14);
+	m->base_bspi = d ? d->base : 0;
+	m->num_bspi = d ? d->instances : 0;
+	d = find_md(l, 9);
+	m->base_uart_tx = d ? d->base : 0;
+	m->num_uart = d ? d->instances : 0;
+	d = find_md(l, 10);
+	m->base_uart_rx = d ? d->base : 0;
+	if (m->num_bspi > 2)
+		m->num_bspi = 2;
+	if (m->num_uart > 2)
+		m->num_uart = 2;
+	if (m->num_tppwm > SIM_MAX_INST)
+		m->num_tppwm = SIM_MAX_INST;
 	d = find_md(l, 5);
 	m->base_stepgen = d ? d->base : 0;
 	m->num_stepgens = d ? d->instances : 0;
@@ -159,6 +193,8 @@ static int module_out(struct hm2_sim_model *m, int pin)
 {
 	int i;
 
+	if (pin >= 0 && pin == m->pin_mux_sel)
+		return m->mux_sel;
 	for (i = 0; i < m->num_stepgens; i++) {
 		struct sim_stepgen *s = &m->sg[i];
 		int swap = (s->mode >> 2) & 1;
@@ -199,42 +235,94 @@ static int level(struct hm2_sim_model *m, int pin)
 	return pin >= 0 ? m->level[pin] : 0;
 }
 
-/* quadrature (or up/down) counting from the sampled pin levels; index latch */
-static void sample_encoders(struct hm2_sim_model *m)
+/* quadrature (or up/down) counting from the sampled levels; index latch */
+static void sample_encoder(struct sim_encoder *e, int a, int b, int z, rtapi_u16 ts)
 {
 	static const rtapi_s8 quad[4][4] = {	/* [prev AB][now AB]: A leads B = up */
 		{ 0, -1, 1, 2 }, { 1, 0, 2, -1 }, { -1, 2, 0, 1 }, { 2, 1, -1, 0 },
 	};
-	rtapi_u16 ts = (rtapi_u16)rtapi_div_u64(m->ticks, m->enc_tsdiv + 2);
+	int d = 0, pol = (e->control >> 3) & 1;
+
+	if (e->control & (1u << 10)) {		/* up/down: count A rising, B = down */
+		if (a && !e->a)
+			d = b ? -1 : 1;
+	} else {
+		d = quad[(e->a << 1) | e->b][(a << 1) | b];
+		if (d == 2) {		/* both changed: illegal sequence */
+			e->control |= 0x8000u;
+			d = 0;
+		}
+	}
+	if (d) {
+		e->count += d;
+		e->ts = ts;
+	}
+	if ((e->control & (1u << 4)) && z != e->idx && z == pol) {
+		e->latched = e->count;
+		if (e->control & (1u << 6))
+			e->control &= ~(1u << 4);	/* JustOnce */
+	}
+	e->a = a;
+	e->b = b;
+	e->idx = z;
+}
+
+/* The muxed encoders see, through the outside multiplexer, the channel their select
+ * phase picks; the select toggles far faster than HAL runs, so within one step both
+ * channels of a unit are sampled. The data pins show the channel selected now. */
+static void sample_encoders(struct hm2_sim_model *m)
+{
+	int i, k;
+
+	for (k = 0; k < 2; k++) {
+		struct sim_qcount *q = &m->qc[k];
+		rtapi_u16 ts = (rtapi_u16)rtapi_div_u64(m->ticks, q->tsdiv + 2);
+
+		for (i = 0; i < q->num && i < SIM_MAX_INST; i++) {
+			struct sim_encoder *e = &q->enc[i];
+
+			if (q->muxed)
+				sample_encoder(e, m->mux_in[i][0], m->mux_in[i][1], m->mux_in[i][2], ts);
+			else
+				sample_encoder(e, level(m, e->pin_a), level(m, e->pin_b), level(m, e->pin_idx), ts);
+		}
+	}
+}
+
+/* the outside multiplexer: data pins carry the selected channel */
+static void drive_mux(struct hm2_sim_model *m)
+{
+	struct sim_qcount *q = &m->qc[1];
 	int i;
 
-	for (i = 0; i < m->num_encoders; i++) {
-		struct sim_encoder *e = &m->enc[i];
-		int a = level(m, e->pin_a), b = level(m, e->pin_b), z = level(m, e->pin_idx);
-		int d = 0, pol = (e->control >> 3) & 1;
+	if (!q->base)
+		return;
+	m->mux_sel = !m->mux_sel;
+	for (i = m->mux_sel; i < q->num && i < SIM_MAX_INST; i += 2) {
+		struct sim_encoder *e = &q->enc[i];
 
-		if (e->control & (1u << 10)) {		/* up/down: count A rising, B = down */
-			if (a && !e->a)
-				d = b ? -1 : 1;
-		} else {
-			d = quad[(e->a << 1) | e->b][(a << 1) | b];
-			if (d == 2) {		/* both changed: illegal sequence */
-				e->control |= 0x8000u;
-				d = 0;
-			}
+		if (e->pin_a >= 0)
+			m->ext_in[e->pin_a] = m->mux_in[i][0];
+		if (e->pin_b >= 0)
+			m->ext_in[e->pin_b] = m->mux_in[i][1];
+		if (e->pin_idx >= 0)
+			m->ext_in[e->pin_idx] = m->mux_in[i][2];
+	}
+}
+
+/* 3pwmgen: an active fault input latches the fault and clears enable */
+static void tppwm_faults(struct hm2_sim_model *m)
+{
+	int i;
+
+	for (i = 0; i < m->num_tppwm && i < SIM_MAX_INST; i++) {
+		struct sim_tppwm *t = &m->tp[i];
+		int active_high = (t->setup >> 15) & 1;
+
+		if (t->pin_fault >= 0 && level(m, t->pin_fault) == active_high) {
+			t->fault = 1;
+			t->enable = 0;
 		}
-		if (d) {
-			e->count += d;
-			e->ts = ts;
-		}
-		if ((e->control & (1u << 4)) && z != e->idx && z == pol) {
-			e->latched = e->count;
-			if (e->control & (1u << 6))
-				e->control &= ~(1u << 4);	/* JustOnce */
-		}
-		e->a = a;
-		e->b = b;
-		e->idx = z;
 	}
 }
 
@@ -268,8 +356,11 @@ void hm2_sim_model_advance(struct hm2_sim_model *m, long long now_ns)
 		s->acc = (s->acc + (rtapi_u64)((rtapi_s64)(rtapi_s32)s->rate * (rtapi_s64)t)) &
 			 0xFFFFFFFFFFFFull;
 	}
+	drive_mux(m);
 	update_levels(m);
 	sample_encoders(m);
+	tppwm_faults(m);
+	hm2_sim_serial_advance(m);
 }
 
 /* register r and instance i of the module whose base is base, or -1 */
@@ -287,6 +378,7 @@ static int decode(rtapi_u32 addr, rtapi_u32 base, int nregs, int ninst, int *ins
 rtapi_u32 hm2_sim_model_read(struct hm2_sim_model *m, rtapi_u32 addr)
 {
 	int r, i, w = m->layout->port_width, b;
+	rtapi_u32 v;
 
 	addr &= 0xFFFC;
 	m->words_read++;
@@ -306,17 +398,23 @@ rtapi_u32 hm2_sim_model_read(struct hm2_sim_model *m, rtapi_u32 addr)
 		default: return m->inv[i];
 		}
 	}
-	if ((r = decode(addr, m->base_encoder, 5, 0, &i)) >= 0) {
-		struct sim_encoder *e = &m->enc[i < SIM_MAX_INST ? i : 0];
+	for (b = 0; b < 2; b++) {
+		struct sim_qcount *q = &m->qc[b];
 
-		if (r == 0 && i < m->num_encoders)
-			return (rtapi_u32)e->ts << 16 | e->count;
-		if (r == 1 && i < m->num_encoders)
-			return (rtapi_u32)e->latched << 16 | (e->control & 0xFFF8u) | e->idx << 2 |
-			       e->b << 1 | e->a;
+		if ((r = decode(addr, q->base, 5, 0, &i)) < 0)
+			continue;
+		if (r == 0 && i < q->num)
+			return (rtapi_u32)q->enc[i].ts << 16 | q->enc[i].count;
+		if (r == 1 && i < q->num)
+			return (rtapi_u32)q->enc[i].latched << 16 | (q->enc[i].control & 0xFFF8u) |
+			       q->enc[i].idx << 2 | q->enc[i].b << 1 | q->enc[i].a;
 		if (r == 3)
-			return (rtapi_u32)rtapi_div_u64(m->ticks, m->enc_tsdiv + 2) & 0xFFFF;
+			return (rtapi_u32)rtapi_div_u64(m->ticks, q->tsdiv + 2) & 0xFFFF;
 	}
+	if ((r = decode(addr, m->base_tppwm, 4, 0, &i)) >= 0 && r == 1 && i < m->num_tppwm)
+		return m->tp[i].enable | (rtapi_u32)m->tp[i].fault << 1;
+	if (hm2_sim_serial_read(m, addr, &v))
+		return v;
 	if ((r = decode(addr, m->base_stepgen, 10, 0, &i)) >= 0 && r == 1 && i < m->num_stepgens)
 		return (rtapi_u32)(m->sg[i].acc >> 16);
 	if (addr == 0x7000 + 3 * 0x100)		/* DPLL control 1: DDS size 32 reads back */
@@ -326,7 +424,7 @@ rtapi_u32 hm2_sim_model_read(struct hm2_sim_model *m, rtapi_u32 addr)
 
 void hm2_sim_model_write(struct hm2_sim_model *m, rtapi_u32 addr, rtapi_u32 v)
 {
-	int r, i;
+	int r, i, k;
 
 	addr &= 0xFFFC;
 	m->words_written++;
@@ -348,18 +446,38 @@ void hm2_sim_model_write(struct hm2_sim_model *m, rtapi_u32 addr, rtapi_u32 v)
 		update_levels(m);
 		return;
 	}
-	if ((r = decode(addr, m->base_encoder, 5, 0, &i)) >= 0) {
-		if (r == 0 && i < m->num_encoders) {
-			m->enc[i].count = 0;	/* any write clears the count */
+	for (k = 0; k < 2; k++) {
+		struct sim_qcount *q = &m->qc[k];
+
+		if ((r = decode(addr, q->base, 5, 0, &i)) < 0)
+			continue;
+		if (r == 0 && i < q->num) {
+			q->enc[i].count = 0;	/* any write clears the count */
 			return;
 		}
-		if (r == 1 && i < m->num_encoders) {
-			m->enc[i].control = v & 0xFFF8u;	/* bit 15 loads the quad-error flag */
+		if (r == 1 && i < q->num) {
+			q->enc[i].control = v & 0xFFF8u;	/* bit 15 loads the quad-error flag */
 			return;
 		}
 		if (r == 2)
-			m->enc_tsdiv = v & 0xFFFF;
+			q->tsdiv = v & 0xFFFF;
+		if (r == 4)
+			q->filter = v;
 	}
+	if ((r = decode(addr, m->base_tppwm, 4, 0, &i)) >= 0 && i < m->num_tppwm) {
+		struct sim_tppwm *t = &m->tp[i];
+
+		if (r == 0)
+			t->value = v;
+		else if (r == 1) {
+			t->enable = v & 1;	/* enabling clears a latched fault */
+			if (t->enable)
+				t->fault = 0;
+		} else if (r == 2)
+			t->setup = v;
+	}
+	if (hm2_sim_serial_write(m, addr, v))
+		return;
 	if ((r = decode(addr, m->base_stepgen, 10, 0, &i)) >= 0 && i < m->num_stepgens) {
 		if (r == 0)
 			m->sg[i].rate = v;
