@@ -182,11 +182,15 @@ void update_joint_homing_params(int jno, double home_offset, double home, int ho
 /* JOINT_HOME: jno >= 0 one joint (a joint with a negative sequence homes its whole
  * synchronized group), -1 Home-All. Motion's preconditions are the caller's (above).
  * Returns 0 when homing started, -EINVAL for a bad joint number, -EBUSY when refused
- * (already homing, shared switch closed: the error is reported), 1 when there is
+ * (already homing or a Home-All running; a closed shared switch is reported when the
+ * joint starts, in do_homing()), 1 when there is
  * nothing to do (NO_REHOME joint already homed, Home-All with no joint). */
 int do_home_joint(int jno);
 /* Stop homing of joint jno (-1: every joint, and any Home-All/sequence): the joint
- * goes through ABORT (homed and homing FALSE, index-enable FALSE, planner stopped). */
+ * goes through ABORT (homed and homing FALSE, index-enable FALSE). Called outside
+ * do_homing(), it cannot reach motmod's free planner: motmod stops the planners of
+ * the joints it cancels itself (it does so on disable and ABORT anyway). A joint of
+ * a synchronized group takes its group with it. */
 void do_cancel_homing(int jno);
 /* JOINT_UNHOME: jno >= 0 one joint, -1 all, -2 only VOLATILE_HOME joints. Refused
  * (error reported, -EBUSY) while any homing is active or the joint's free planner moves. */
