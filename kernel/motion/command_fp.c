@@ -462,7 +462,7 @@ static int run(struct motmod *m, const struct motion_command *c)
 		return MOTION_CMD_OK;
 	case MOTCMD_COORD:
 	case MOTCMD_TELEOP:
-		if (m->kins_type != KINEMATICS_IDENTITY && !get_allhomed()) {
+		if (m->kins_type != KINEMATICS_IDENTITY && !mot_all_homed(m)) {
 			mot_error(m, "all joints must be homed before going into %s mode",
 				  c->command == MOTCMD_COORD ? "coordinated" : "teleop");
 			return MOTION_CMD_INVALID;
@@ -542,7 +542,7 @@ static int run(struct motmod *m, const struct motion_command *c)
 		coord_set_term_cond(m, c->termCond, c->tolerance);
 		return MOTION_CMD_OK;
 	case MOTCMD_SET_SPINDLESYNC:
-		coord_set_spindlesync(m, c->spindlesync, c->flags != 0);
+		coord_set_spindlesync(m, c->spindle, c->spindlesync, c->flags != 0);
 		return MOTION_CMD_OK;
 	case MOTCMD_SET_NUM_JOINTS:
 	case MOTCMD_SET_NUM_SPINDLES:
@@ -676,7 +676,9 @@ void mot_command_handler(void *arg, long period_ns)
 		cfg.num_aout = m->num_aout;
 		cfg.teleop = m->state == MOTION_TELEOP;
 		status = cmdcheck(&c, &cfg, why, sizeof(why));
-		if (status != MOTION_CMD_OK)
+		if (status == MOTION_CMD_UNKNOWN)
+			mot_error(m, "%s", why);
+		else if (status != MOTION_CMD_OK)
 			mot_error(m, "%s: %s", cmdcheck_name(c.command), why);
 		else
 			status = run(m, &c);

@@ -94,12 +94,24 @@ static void feed_scales(struct motmod *m, double *feed, double *rapid)
 	*rapid = scale_rapid;
 }
 
+/* every active joint homed (motion.is-all-homed); computed here from get_homed() so
+ * it holds from the first period on */
+bool mot_all_homed(struct motmod *m)
+{
+	int j;
+
+	for (j = 0; j < m->num_joints; j++)
+		if (m->joint[j].active && !get_homed(j))
+			return false;
+	return true;
+}
+
 static void forward_kins(struct motmod *m)
 {
 	double joints[KINS_MAX_JOINTS];
 	EmcPose fb = m->world_fb;
 
-	if (m->kins_type != KINEMATICS_IDENTITY && !get_allhomed()) {
+	if (m->kins_type != KINEMATICS_IDENTITY && !mot_all_homed(m)) {
 		m->world_fb_ok = false;
 		return;
 	}
@@ -323,7 +335,7 @@ static void set_world_from_joints(struct motmod *m)
 	double joints[KINS_MAX_JOINTS];
 	EmcPose w = m->world_cmd;
 
-	if (m->kins_type != KINEMATICS_IDENTITY && !get_allhomed())
+	if (m->kins_type != KINEMATICS_IDENTITY && !mot_all_homed(m))
 		return;
 	joints_of(m, joints, false);
 	if (mot_forward(m, joints, &w) == 0)
@@ -433,7 +445,6 @@ static void get_pos_cmds(struct motmod *m)
 
 		coord_cycle(m, &w);
 		m->world_cmd = w;
-		joints_from_world(m);
 		break;
 	}
 	}
@@ -442,7 +453,8 @@ static void get_pos_cmds(struct motmod *m)
 
 		jt->acc_cmd = m->state == MOTION_FREE || m->state == MOTION_DISABLED ? 0.0 :
 			      (jt->vel_cmd - jt->prev_vel_cmd) / m->servo_period_s;
-		jt->coarse_pos = jt->pos_cmd;
+		if (m->state != MOTION_COORD)
+			jt->coarse_pos = jt->pos_cmd;
 	}
 	soft_limits(m);
 }
@@ -490,7 +502,7 @@ static void motion_outputs(struct motmod *m)
 	*p->teleop_mode = m->teleop;
 	*p->coord_error = m->error;
 	*p->on_soft_limit = m->on_soft_limit;
-	*p->is_all_homed = get_allhomed();
+	*p->is_all_homed = mot_all_homed(m);
 	*p->motion_type = m->state == MOTION_COORD ? type : 0;
 	*p->program_line = m->state == MOTION_COORD ? id : 0;
 	*p->current_vel = m->state == MOTION_COORD ? vel : 0.0;
@@ -555,7 +567,7 @@ static void update_status(struct motmod *m)
 	s->on_soft_limit = m->on_soft_limit;
 	s->jogging_active = *m->pins->jog_is_active;
 	s->enables_new = m->enables_new;
-	s->all_homed = get_allhomed();
+	s->all_homed = mot_all_homed(m);
 	s->num_joints = m->num_joints;
 	s->num_extrajoints = m->num_extrajoints;
 	s->num_spindles = m->num_spindles;

@@ -104,8 +104,10 @@ static int spin(int err, int s, hal_type_t type, hal_pin_dir_t dir, void *ptr, c
 	return pin(err, type, dir, ptr, name, emc2 && s == 0 ? alias : 0);
 }
 
-static int param(int err, hal_type_t type, hal_param_dir_t dir, void *ptr, const char *name)
+static int param(int err, hal_type_t type, hal_param_dir_t dir, volatile void *vptr, const char *name)
 {
+	void *ptr = (void *)vptr;	/* the HAL types are volatile */
+
 	if (err)
 		return err;
 	switch (type) {
@@ -154,7 +156,7 @@ static int split_names(const char *what, const char *list, char *buf, int buflen
 			*p++ = 0;
 		while (end > start && end[-1] == ' ')
 			*--end = 0;
-		if (!*start || n >= max || rtapi_strlen(start) > 30) {
+		if (!*start || n >= max || strlen(start) > 30) {
 			rtapi_print_msg(RTAPI_MSG_ERR,
 					"motmod: %s='%s': %s\n", what, list,
 					!*start ? "empty name" : n >= max ? "too many names" :
@@ -585,9 +587,15 @@ int rtapi_app_main(void)
 	for (i = 0; i < mot.num_joints; i++)
 		mot.joint[i].active = true;
 	rtapi_fpu_begin();
-	mot_init_values(&mot);
-	mot_init_pin_values(&mot);
+	err = mot_init_values(&mot);
+	if (!err)
+		mot_init_pin_values(&mot);
 	rtapi_fpu_end();
+	if (err) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "motmod: no memory for the trajectory planner\n");
+		remove_all();
+		return err;
+	}
 	mot.shm->hdr.version = MOTION_IF_VERSION;
 	mot.shm->hdr.size = sizeof(struct motion_shmem);
 	/* published last: a client that sees the magic sees a set-up block */

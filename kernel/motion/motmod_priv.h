@@ -190,7 +190,7 @@ void mot_homing_report(const char *msg);
 void mot_error_attach(struct motmod *m);
 
 /* motmod_init_fp.c */
-void mot_init_values(struct motmod *m);
+int mot_init_values(struct motmod *m);	/* 0 or -ENOMEM (planner memory) */
 void mot_init_pin_values(struct motmod *m);
 
 /* command_fp.c / control_fp.c: the two HAL functions (arg = struct motmod *) */
@@ -212,6 +212,7 @@ void mot_spindle_inputs(struct motmod *m);
 void mot_spindle_outputs(struct motmod *m);
 
 /* control_fp.c helpers the command handler uses */
+bool mot_all_homed(struct motmod *m);
 void mot_set_free_from_cmd(struct motmod *m);
 int mot_forward(struct motmod *m, const double *joints, EmcPose *world);
 int mot_inverse(struct motmod *m, const EmcPose *world, double *joints);
