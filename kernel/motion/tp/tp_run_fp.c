@@ -321,7 +321,7 @@ static void fill_status(struct tp *tp, struct tp_outputs *out, double dist, doub
 		out->distance_to_go = h->kind == TC_TAP ? rtapi_fabs(h->len - h->tap_x)
 							: h->len - h->progress;
 		out->requested_vel = h->reqvel;
-		out->spindle_sync = h->sync != TP_SYNC_NONE && h->active;
+		out->spindle_sync = h->sync != TP_SYNC_NONE;	/* waiting (index, at-speed) or moving */
 		out->spindle_num = h->spindle_num;
 		out->probing = h->motion_type == TP_MOTION_PROBING;
 	}

@@ -100,3 +100,76 @@ TEST(TpRandomOverride, ChangingFeedOverrideKeepsLimits)
 	EXPECT_LE(s.worst_vel_ratio(), 1 + 1e-9);
 	EXPECT_LE(worst_dev(s, p), 0.01 + 1e-9);
 }
+
+// Segments arrive while the planner runs (the interpreter streaming behind motion),
+// with pauses and resumes: limits hold and the path ends on the last point.
+TEST(TpRandomStream, StreamingWithPausesKeepsLimitsAndBand)
+{
+	for (int mode = 0; mode < 3; mode++) {
+		TpSim s;
+		tp_set_arc_blend(s.tp, mode != 2, 1, 50, 4, 100, 0.1);
+		tp_set_term_cond(s.tp, mode == 0 ? TP_TERM_EXACT : TP_TERM_PARABOLIC, 0.01);
+		Prog p = random_polyline(11 + mode, 80, 1.0, 0.02);
+		const int period = mode == 1 ? 41 : 7;	// mode 1: starved queue
+		size_t next = 1;
+		std::mt19937 rng(5);
+		for (int k = 0; k < 400000; k++) {
+			if (next < p.pts.size() && k % period == 0) {
+				tp_pose e = pose(p.pts[next][0], p.pts[next][1], p.pts[next][2]);
+				tp_move m = s.feed(40, (int)next);
+				ASSERT_EQ(tp_add_line(s.tp, &e, &m), 0);
+				next++;
+			}
+			if (k % 331 == 100)
+				tp_pause(s.tp);
+			if (k % 331 == 200)
+				tp_resume(s.tp);
+			if (s.cycle().done && next >= p.pts.size())
+				break;
+		}
+		ASSERT_TRUE(s.outs.back().done) << "mode " << mode;
+		for (int i = 0; i < 3; i++)
+			EXPECT_NEAR(s.pos()[i], p.pts.back()[i], 1e-9) << "mode " << mode;
+		EXPECT_LE(s.worst_vel_ratio(), 1 + 1e-9) << "mode " << mode;
+		EXPECT_LE(s.worst_acc_ratio(), 1 + 1e-6) << "mode " << mode;
+		EXPECT_LE(worst_dev(s, p), 0.01 + 1e-9) << "mode " << mode;
+	}
+}
+
+// Lines and tangent / non-tangent arcs mixed, G64 P: limits and end point.
+TEST(TpRandomArcs, LinesAndArcsKeepLimits)
+{
+	for (unsigned seed = 1; seed <= 4; seed++) {
+		TpSim s;
+		tp_set_term_cond(s.tp, TP_TERM_PARABOLIC, 0.01);
+		std::mt19937 rng(seed);
+		std::uniform_real_distribution<double> u(-3, 3);
+		double x = 0, y = 0;
+		for (int i = 0; i < 30; i++) {
+			double nx = x + u(rng), ny = y + u(rng);
+			if (i % 2) {
+				// arc to (nx, ny) around the midpoint shifted sideways
+				double cx = 0.5 * (x + nx) + 0.3 * (ny - y), cy = 0.5 * (y + ny) - 0.3 * (nx - x);
+				// end on the same radius: project the end onto the start circle
+				double r = std::hypot(x - cx, y - cy), a = std::atan2(ny - cy, nx - cx);
+				nx = cx + r * std::cos(a);
+				ny = cy + r * std::sin(a);
+				tp_pose e = pose(nx, ny, 0);
+				tp_cart c{cx, cy, 0}, n{0, 0, (i % 4 == 1) ? 1.0 : -1.0};
+				tp_move m = s.feed(40, i);
+				m.motion_type = TP_MOTION_ARC;
+				ASSERT_EQ(tp_add_circle(s.tp, &e, &c, &n, 0, &m), 0);
+			} else {
+				ASSERT_EQ(s.line(nx, ny, 0, 40, i), 0);
+			}
+			x = nx;
+			y = ny;
+		}
+		s.run(400000);
+		ASSERT_TRUE(s.outs.back().done);
+		EXPECT_NEAR(s.pos()[0], x, 1e-9);
+		EXPECT_NEAR(s.pos()[1], y, 1e-9);
+		EXPECT_LE(s.worst_vel_ratio(), 1 + 1e-9) << "seed " << seed;
+		EXPECT_LE(s.worst_acc_ratio(), 1 + 1e-6) << "seed " << seed;
+	}
+}

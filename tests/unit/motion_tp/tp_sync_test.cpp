@@ -12,6 +12,9 @@ TEST(TpSync, PositionSyncWaitsForIndexAndFollowsSpindle)
 	const tp_outputs &o1 = s.cycle();
 	EXPECT_TRUE(o1.spindle_index_request);
 	EXPECT_TRUE(o1.waiting_for_index);
+	EXPECT_TRUE(o1.spindle_sync);
+	EXPECT_EQ(o1.spindle_num, 0);
+	EXPECT_FALSE(s.cycle().spindle_index_request);	// asked once
 	s.in.spindle_index_enable = 1;	// motmod set the pin
 	for (int i = 0; i < 5; i++) {
 		revs += rps * s.dt;
