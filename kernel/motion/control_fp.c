@@ -477,7 +477,11 @@ static void update_inpos(struct motmod *m)
 				inpos = false;
 		break;
 	case MOTION_COORD:
+		/* the planner is done and the interpolators have arrived */
 		inpos = coord_is_done(m);
+		for (j = 0; j < m->num_joints; j++)
+			if (m->joint[j].vel_cmd != 0.0)
+				inpos = false;
 		break;
 	default:
 		break;

@@ -41,6 +41,11 @@ void freetp_update(struct freetp *tp, double period_s)
 	tp->active = tp->curr_vel != 0.0 ||
 		     (tp->enable && rtapi_fabs(tp->pos_cmd - tp->curr_pos) > tiny_dp);
 	tp->curr_pos += tp->curr_vel * period_s;
+	/* arrived (stopped within noise of the target): land on it exactly */
+	if (tp->enable && tp->curr_vel == 0.0 && rtapi_fabs(tp->pos_cmd - tp->curr_pos) <= tiny_dp) {
+		tp->curr_pos = tp->pos_cmd;
+		tp->active = false;
+	}
 }
 
 void freetp_reset(struct freetp *tp, double pos)
