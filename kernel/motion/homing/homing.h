@@ -208,9 +208,11 @@ int set_unhomed(int jno, int motion_state);
 /* Run one period (FREE state only). period_ns: the servo period (times HOME_DELAY).
  * Returns true in the period in which "all homed" became true. */
 bool do_homing(long period_ns);
-/* A probe trip cancels homing: if get_homing_is_active(), cancel all and (unless
- * no_probe_home_error) report "Probe tripped during homing motion.". Returns true
- * if homing was active. */
+/* A probe trip cancels homing: unless no_probe_home_error (the probe may be a home
+ * switch then), if get_homing_is_active(): cancel all and report "Probe tripped
+ * during homing motion.". Returns true when it cancelled. Like do_cancel_homing(),
+ * called outside do_homing(): motmod then stops the free planners of the joints
+ * that were homing itself (or they run on to the far end of the search move). */
 bool homing_probe_trip(bool no_probe_home_error);
 
 /* --- getters (homing_core.c, no FP), j = joint number --- */
