@@ -10,7 +10,7 @@ motion_config 3 10 100
 motcmd enable || exit 1
 motcmd coord || exit 1
 motcmd wait-state coord 10 || exit 1
-capture_start circle.txt
+capture_start "$T/circle.txt"
 motcmd arc 0 0 0 5 0 0 0 0 1 0 8 100 || exit 1
 sleep 0.2
 motcmd wait-inpos 30 || exit 1
@@ -31,7 +31,7 @@ END {
   printf "path speed reaches F 8: %s\n", abs(smax - 8) < 1e-3 ? "yes" : "NO (" smax ")"
   printf "axis velocity within 10: %s\n", vmax <= 10 * (1 + 1e-6) ? "yes" : "NO (" vmax ")"
   printf "axis acceleration within 100: %s\n", amax <= 100 * (1 + 1e-4) ? "yes" : "NO (" amax ")"
-  printf "final %.6f %.6f\n", px, py }' <circle.txt
+  printf "final %.6f %.6f\n", px, py }' <"$T/circle.txt"
 motcmd errors
-rm -f circle.txt config.cmd
+rm -f config.cmd
 halrun -U

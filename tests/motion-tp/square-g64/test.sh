@@ -6,8 +6,8 @@ motion_load 3
 tp_sample
 halcmd start || exit 1
 motion_config 3 10 100
-tp_square_run square.txt blend 0.01
-echo "$(tp_analyze 0.001 10 100 0.01 <square.txt)"
+tp_square_run "$T/square.txt" blend 0.01
+echo "$(tp_analyze 0.001 10 100 0.01 <"$T/square.txt")"
 motcmd errors
-rm -f square.txt square.cmd config.cmd
+rm -f config.cmd
 halrun -U
