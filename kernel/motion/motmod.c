@@ -50,6 +50,7 @@ static int unlock_joints_mask = 0;
 RTAPI_MP_INT(unlock_joints_mask, "bit n: joint.n.unlock / is-unlocked pins (locking indexer)");
 
 static struct motmod mot;	/* all of motmod's state (motmod_priv.h) */
+static bool made_base_thread, made_servo_thread;	/* removed again when the load fails */
 
 static const char axis_letters[MOTION_MAX_AXES] = { 'x', 'y', 'z', 'a', 'b', 'c', 'u', 'v', 'w' };
 
@@ -274,12 +275,14 @@ static int make_threads(void)
 			rtapi_print_msg(RTAPI_MSG_ERR, "motmod: cannot create base-thread (%d)\n", err);
 			return err;
 		}
+		made_base_thread = true;
 	}
 	err = hal_create_thread("servo-thread", servo, 1);
 	if (err) {
 		rtapi_print_msg(RTAPI_MSG_ERR, "motmod: cannot create servo-thread (%d)\n", err);
 		return err;
 	}
+	made_servo_thread = true;
 	mot.servo_period_ns = servo;
 	mot.traj_period_ns = traj_period_nsec ? traj_period_nsec : servo;
 	return 0;
@@ -521,10 +524,16 @@ static int make_shmem(void)
 	return 0;
 }
 
+/* a failed load: everything, threads included */
 static void remove_all(void)
 {
 	if (mot.comp_id > 0)
 		hal_exit(mot.comp_id);
+	if (made_servo_thread)
+		hal_thread_delete("servo-thread");
+	if (made_base_thread)
+		hal_thread_delete("base-thread");
+	made_servo_thread = made_base_thread = false;
 	if (mot.shm)
 		mot.shm->hdr.magic = 0;
 	if (mot.shmem_id > 0)
@@ -606,5 +615,7 @@ int rtapi_app_main(void)
 
 void rtapi_app_exit(void)
 {
+	/* the threads stay, as LinuxCNC's motmod leaves them (other functions may use them) */
+	made_servo_thread = made_base_thread = false;
 	remove_all();
 }

@@ -219,8 +219,15 @@ static int may_start(struct tp *tp, struct tc *tc, const struct tp_inputs *in,
 		tc->tap_revs_prev = in->spindle_revs;
 		return 1;
 	}
-	if (tc->sync != TP_SYNC_POSITION || tp->sync_state >= 2)
+	if (tc->sync != TP_SYNC_POSITION)
 		return 1;
+	if (tp->sync_state >= 2) {
+		/* a stop inside a synchronized chain: catch the spindle up again and re-lock
+		 * the phase instead of chasing the revolutions turned while standing */
+		tp->sync_state = 2;
+		tp->sync_base = 0;
+		return 1;
+	}
 	if (tp->sync_state == 0) {
 		tp->sync_state = 1;
 		tp->index_seen = 0;
@@ -337,9 +344,9 @@ static void set_exec(struct tp *tp, const struct tc *tc)
 
 int tp_run_cycle(struct tp *tp, const struct tp_inputs *in, struct tp_outputs *out)
 {
-	double dt = tp->cycle, prev_pos[TP_N];
 	if (!tp || !in || !out)
 		return TP_ERR_INVALID;
+	double dt = tp->cycle, prev_pos[TP_N];
 	memset(out, 0, sizeof(*out));
 	for (int i = 0; i < TP_N; i++)
 		prev_pos[i] = tp->pos[i];

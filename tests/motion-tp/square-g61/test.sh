@@ -1,0 +1,13 @@
+# G61: the square stops exactly on each corner (the sampled X/Y joint positions pass
+# through every corner point) and keeps each axis within its limits.
+. ../lib.sh
+motion_load 3
+tp_sample
+halcmd start || exit 1
+motion_config 3 10 100
+tp_square_run "$T/square.txt" exact
+# the cubic interpolator rounds a stop corner by a dt^2 / 12 = 8.3e-6
+echo "$(tp_analyze 0.001 10 100 0.00001 <"$T/square.txt")"
+motcmd errors
+rm -f config.cmd
+halrun -U
