@@ -48,13 +48,17 @@ void Interp::Impl::do_comment(const Block& b)
 		return;
 	const std::string& c = b.comment;
 	std::string rest;
+	auto text = [&rest] {   // the text after "KEYWORD," without leading blanks
+		size_t i = rest.find_first_not_of(" \t");
+		return i == std::string::npos ? std::string() : rest.substr(i);
+	};
 	if (keyword(c, "msg", rest)) {
-		canon.message(rest);
+		canon.message(text());
 	} else if (keyword(c, "debug", rest)) {
 		if (params[5599] != 0)
-			canon.message(substitute(rest));
+			canon.message(substitute(text()));
 	} else if (keyword(c, "print", rest)) {
-		canon.print_text(substitute(rest));
+		canon.print_text(substitute(text()));
 	} else if (keyword(c, "logopen", rest) || keyword(c, "logappend", rest)) {
 		if (log_file)
 			std::fclose(log_file);
@@ -68,7 +72,7 @@ void Interp::Impl::do_comment(const Block& b)
 		log_file = nullptr;
 	} else if (keyword(c, "log", rest)) {
 		if (log_file) {
-			std::fprintf(log_file, "%s\n", substitute(rest).c_str());
+			std::fprintf(log_file, "%s\n", substitute(text()).c_str());
 			std::fflush(log_file);
 		}
 	} else if (keyword(c, "probeopen", rest)) {
@@ -82,7 +86,7 @@ void Interp::Impl::do_comment(const Block& b)
 			std::fclose(probe_file);
 		probe_file = nullptr;
 	} else if (keyword(c, "abort", rest)) {
-		fail("%s", substitute(rest).c_str());
+		fail("%s", substitute(text()).c_str());
 	} else {
 		canon.comment(c);
 	}

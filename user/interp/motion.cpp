@@ -233,9 +233,9 @@ void Interp::Impl::do_arc(const Block& b, int code, const Pos& end)
 		double T = units == Units::INCH ? cfg.center_arc_tolerance_inch : cfg.center_arc_tolerance_mm;
 		double d = std::fabs(r1 - r2), rel = d / std::max(r1, r2);
 		if (d > 100 * T || (rel > 0.001 && d > T))
-			fail("Radius to end of arc differs from radius to start: start=(c%c,c%c)=(%.4f,%.4f) "
+			fail("Radius to end of arc differs from radius to start: start=(%.4f,%.4f) "
 			     "center=(%.4f,%.4f) end=(%.4f,%.4f) r1=%.4f r2=%.4f abs_err=%.4g rel_err=%.4f%%",
-			     axis_letters[a1] - 32, axis_letters[a2] - 32, sx, sy, cx, cy, ex, ey, r1, r2, d,
+			     sx, sy, cx, cy, ex, ey, r1, r2, d,
 			     rel * 100);
 	}
 	int rot = code == 30 ? turns : -turns;

@@ -55,8 +55,10 @@ size_t Interp::Impl::scan(const std::string& label, std::initializer_list<OKind>
 				s.scan_cache[key] = i;
 			return i;
 		}
-		if (stop_at_sub && k == O_SUB)
+		if (stop_at_sub && k == O_SUB) {
+			cur_line = (int)i + 1;
 			fail("Nested subroutine definition (%s sub inside %s)", show(lab).c_str(), show(label).c_str());
+		}
 	}
 	fail("No matching %s %s found", show(label).c_str(), kind_name(*kinds.begin()));
 }
