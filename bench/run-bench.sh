@@ -87,6 +87,8 @@ echo "== stepgen: maximum step rates and make-pulses cost"
 echo "== kinematics: ns per forward / inverse call of each module"
 "$build/bin/kins_bench"
 
+echo "== interpreter: RS274NGC blocks per second, generated G1 program (in memory)"
+if [ "$quick" = 1 ]; then "$build/bin/interp_bench" 100000; else "$build/bin/interp_bench" 1000000; fi
 echo "== hostmot2: hm2 read + write per cycle, simulated 5i25+7i76 layout (simulated flavor)"
 "$here/hostmot2-bench.sh" "$build" 3
 

@@ -60,6 +60,8 @@ void Interp::Impl::do_comment(const Block& b)
 	} else if (keyword(c, "print", rest)) {
 		canon.print_text(substitute(text()));
 	} else if (keyword(c, "logopen", rest) || keyword(c, "logappend", rest)) {
+		if (!cfg.file_output)
+			fail("Log files are disabled");
 		if (log_file)
 			std::fclose(log_file);
 		bool append = keyword(c, "logappend", rest);
@@ -76,6 +78,8 @@ void Interp::Impl::do_comment(const Block& b)
 			std::fflush(log_file);
 		}
 	} else if (keyword(c, "probeopen", rest)) {
+		if (!cfg.file_output)
+			fail("Probe files are disabled");
 		if (probe_file)
 			std::fclose(probe_file);
 		probe_file = std::fopen(rest.c_str(), "w");

@@ -35,6 +35,7 @@ struct Config {
 	bool ini_vars = true;                   // #<_ini[section]key>
 	bool hal_pin_vars = true;               // #<_hal[name]>
 	std::map<std::string, std::string> ini; // "SECTION]KEY" -> value, for #<_ini[..]..>
+	bool file_output = true;                // (LOGOPEN,..), (PROBEOPEN,..) may create files
 	// Resource limits (bad input must not hang or exhaust memory):
 	long max_loop_iterations = 10000000;    // per while/do/repeat loop entry
 	long max_blocks = 0;                    // blocks executed per program, 0 = unlimited
