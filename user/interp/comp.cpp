@@ -96,7 +96,7 @@ void Interp::Impl::comp_start_cmd(const Block& b, int code)
 		int n = current_tool;
 		if (b.w('d')) {
 			double d = b.v('d');
-			if (std::fabs(d - std::nearbyint(d)) > 0.0001)
+			if (!(std::fabs(d - std::nearbyint(d)) <= 0.0001 && d < 1e9))
 				fail("Non integer value for integer");
 			n = (int)std::nearbyint(d);
 		}

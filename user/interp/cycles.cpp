@@ -29,6 +29,8 @@ void Interp::Impl::do_cycle(Block& b, int code)
 	int reps = b.w('l') ? (int)b.v('l') : 1;
 	if (reps == 0)
 		fail("Cannot do zero repeats of cycle");
+	if (reps > cfg.max_loop_iterations)
+		fail("Too many repeats of cycle (limit %ld)", cfg.max_loop_iterations);
 	Pos cur = program_pos();
 	if (cycle_code != code) {
 		cycle_code = code;
@@ -94,6 +96,8 @@ void Interp::Impl::do_cycle(Block& b, int code)
 	if (r < z)
 		fail("R less than %c in cycle in %s plane", ln, pname);
 	double clear = retract_old_z ? std::max(cycle_old_z, r) : r;
+	if ((code == 730 || code == 830) && (r - z) / cycle_q > cfg.max_loop_iterations)
+		fail("Too many pecks: Q is too small for the depth (limit %ld)", cfg.max_loop_iterations);
 	double delta = units == Units::INCH ? 0.010 : 0.254;
 	MotionControl saved_mc = mc;
 	if (mc != MotionControl::EXACT_PATH)
@@ -251,6 +255,8 @@ void Interp::Impl::do_g76(const Block& b)
 	int spring = b.w('h') ? (int)std::lround(b.v('h')) : 0;
 	if (spring < 0)
 		fail("Negative H value used with G76");
+	if (spring > 1000)
+		fail("Too many spring passes with G76 (H > 1000)");
 	int taper_ends = b.w('l') ? (int)b.v('l') : 0;
 	if (taper_ends > 3)
 		fail("L value must be 0..3 with G76");
@@ -295,8 +301,10 @@ void Interp::Impl::do_g76(const Block& b)
 	};
 	for (int n = 1;; n++) {
 		double depth = first * std::pow((double)n, 1.0 / deg);
-		if (depth >= full || n > 10000)
+		if (depth >= full)
 			break;
+		if (n >= 10000)
+			fail("G76 would need more than 10000 passes: J is too small for K");
 		pass(depth);
 	}
 	pass(full);

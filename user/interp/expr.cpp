@@ -234,7 +234,7 @@ int Interp::Impl::read_int(const std::string& t, size_t& i)
 {
 	double v = read_real(t, i);
 	double r = std::nearbyint(v);
-	if (std::fabs(v - r) > 0.0001 || std::fabs(r) > 2e9)
+	if (!(std::fabs(v - r) <= 0.0001 && std::fabs(r) <= 2e9))
 		fail("Non integer value for integer");
 	return (int)r;
 }
@@ -251,9 +251,9 @@ double Interp::Impl::read_param_ref(const std::string& t, size_t& i, int depth)
 	}
 	double v = read_real(t, i, depth);
 	double r = std::nearbyint(v);
-	if (std::fabs(v - r) > 0.0001)
+	if (!(std::fabs(v - r) <= 0.0001))
 		fail("Non integer value for integer");
-	if (r < 1 || r >= MAX_PARAM)
+	if (!(r >= 1 && r < MAX_PARAM))
 		fail("Parameter number out of range");
 	return get_param((int)r);
 }

@@ -71,8 +71,8 @@ bool Interp::init()
 	Impl& s = *impl_;
 	try {
 		s.load_param_file();
-		int c = (int)s.params[5220];
-		s.coord = c >= 1 && c <= 9 ? c : 1;
+		double c = s.params[5220];
+		s.coord = c >= 1 && c <= 9 ? (int)c : 1;
 		s.params[5220] = s.coord;
 		if (s.cfg.disable_g92_persistence)
 			for (int i = 5210; i <= 5219; i++)

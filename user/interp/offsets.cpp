@@ -87,7 +87,7 @@ static int g10_p(const Block& b, int l)
 	if (!b.w('p'))
 		fail("P word missing with G10 L%d", l);
 	double p = b.v('p');
-	if (std::fabs(p - std::nearbyint(p)) > 0.0001)
+	if (!(std::fabs(p - std::nearbyint(p)) <= 0.0001 && std::fabs(p) < 1e6))
 		fail("P value not an integer with G10");
 	return (int)std::nearbyint(p);
 }
@@ -260,7 +260,7 @@ void Interp::Impl::do_tool_length(const Block& b, int code)
 	};
 	auto h_word = [&]() {
 		double h = b.v('h');
-		if (std::fabs(h - std::nearbyint(h)) > 0.0001)
+		if (!(std::fabs(h - std::nearbyint(h)) <= 0.0001 && h < 1e9))
 			fail("Non integer value for integer");
 		return (int)std::nearbyint(h);
 	};

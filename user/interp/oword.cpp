@@ -220,7 +220,7 @@ void Interp::Impl::execute_o(Block& b)
 		if (f.loops.size() >= 1000)
 			fail("Too many nested loops");
 		LoopBlock lb{O_REPEAT, L, pc - 1};
-		lb.remaining = n > 4e18 ? (long)4e18 : (long)std::nearbyint(n);
+		lb.remaining = !(n >= 0.5) ? 0 : n > 4e18 ? (long)4e18 : (long)std::nearbyint(n);
 		if (lb.remaining <= 0)
 			pc = scan(L, {O_ENDREPEAT}, pc, false) + 1;
 		else

@@ -269,7 +269,7 @@ static int to_int(double v)
 	double r = std::nearbyint(v);
 	if (std::fabs(v - r) > 0.0001)
 		fail("Non integer value for integer");
-	if (r > 2e9 || r < -2e9)
+	if (!(std::fabs(r) <= 2e9))   // also NaN
 		fail("Non integer value for integer");
 	return (int)r;
 }
@@ -322,7 +322,7 @@ void Interp::Impl::read_items(const std::string& t, size_t& i, Block& b)
 		double v = read_real(t, i);
 		if (c == 'g') {
 			double r = std::nearbyint(v * 10);
-			if (std::fabs(v * 10 - r) > 0.001)
+			if (!(std::fabs(v * 10 - r) <= 0.001))   // also NaN
 				fail("Non integer value for integer");
 			if (r < 0)
 				fail("Negative g code used");
