@@ -42,13 +42,14 @@ find "$src/tests" "$src/demo" -name '*.hal' -exec grep -h '^[[:space:]]*loadrt[[
 	done
 seed fuzz_stream_line "$src"/tests/fuzz/seeds/stream_line/*
 seed fuzz_comp "$src"/kernel/components/*.comp
+seed fuzz_rs274 "$src"/tests/interp/programs/*.ngc "$src"/tests/interp/subs/*.ngc
 for v in 0 1 TRUE false -7 0x7fffffff 4294967295 2.5 -1e-3 0x1p4 1e308 nan; do
 	mkdir -p "$corpus/fuzz_values"
 	printf '%s' "$v" > "$corpus/fuzz_values/v-$v"
 done
 
 status=0
-for t in fuzz_halcmd_line fuzz_ini fuzz_values fuzz_module_args fuzz_protocol fuzz_stream_line fuzz_comp; do
+for t in fuzz_halcmd_line fuzz_ini fuzz_values fuzz_module_args fuzz_protocol fuzz_stream_line fuzz_comp fuzz_rs274; do
 	if [ ! -x "$build/$t" ]; then
 		echo "run-fuzz: $build/$t not built" >&2
 		status=1
