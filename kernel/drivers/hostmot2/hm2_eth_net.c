@@ -19,10 +19,10 @@
 
 int hm2_eth_net_open(const char *ip, int port)
 {
-	rtapi_print_msg(RTAPI_MSG_ERR, "hm2_eth: not available in the kernel flavor: a kernel UDP "
-			"socket may sleep and needs the network softirq, neither of which can run "
-			"inside a realtime thread (see hm2_eth(9)); load hm2_eth in the simulated "
-			"flavor (rtapi_app)\n");
+	/* one line under the kernel message ring's 200 bytes */
+	rtapi_print_msg(RTAPI_MSG_ERR, "hm2_eth: not available in the kernel flavor: kernel UDP "
+			"sockets may sleep and need the network softirq, which a realtime thread "
+			"cannot allow (hm2_eth(9)); use the simulated flavor\n");
 	return -EOPNOTSUPP;
 }
 
