@@ -303,7 +303,7 @@ int main(int argc, char **argv)
 	std::fflush(stdout);
 
 	Card card(layout, fault, o.name);
-	unsigned long in_pkts = 0, in_bytes = 0, out_pkts = 0, out_bytes = 0;
+	unsigned long in_pkts = 0, in_bytes = 0, out_pkts = 0, out_bytes = 0, read_pkts = 0;
 	long long end = now_ns() + o.lifetime * 1000000000LL;
 	unsigned long reads = 0, writes = 0;
 	bool was_bitten = false;
@@ -320,6 +320,7 @@ int main(int argc, char **argv)
 		in_pkts++;
 		in_bytes += (unsigned long)n;
 		bool reading = has_reads(pkt, (int)n);
+		read_pkts += reading;
 		unsigned long k = 0;
 		if (loss_on)
 			k = reading ? ++reads : ++writes;
@@ -344,7 +345,7 @@ int main(int argc, char **argv)
 		out_bytes += reply.size();
 	}
 	close(fd);
-	std::printf("datagrams received %lu (%lu bytes), sent %lu (%lu bytes)\n", in_pkts, in_bytes,
-		    out_pkts, out_bytes);
+	std::printf("datagrams received %lu (%lu bytes, %lu with reads), sent %lu (%lu bytes)\n",
+		    in_pkts, in_bytes, read_pkts, out_pkts, out_bytes);
 	return 0;
 }
