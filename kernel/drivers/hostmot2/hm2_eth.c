@@ -608,6 +608,7 @@ static int setup_board(int k, const char *where, const char *cfg)
 	if (rc)
 		return rc;
 	b->registered = 1;
+	b->request_ns = b->period_ns = 0;	/* the thread's period is measured afresh */
 	return 0;
 }
 
