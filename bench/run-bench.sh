@@ -96,6 +96,9 @@ if [ "$quick" = 1 ]; then "$build/bin/interp_bench" 100000; else "$build/bin/int
 echo "== hostmot2: hm2 read + write per cycle, simulated 5i25+7i76 layout (simulated flavor)"
 "$here/hostmot2-bench.sh" "$build" 3
 
+echo "== hm2_eth: round trip per servo cycle against the loopback card simulator (simulated flavor)"
+"$here/hm2-eth-bench.sh" "$build" "$([ "$quick" = 1 ] && echo 2000 || echo 10000)"
+
 if [ "$quick" = 1 ]; then
 	echo "== (BENCH_QUICK: no latency or kernel-flavor figures)"
 	exit 0

@@ -329,6 +329,9 @@ int hm2_led_parse(struct hostmot2 *hm2, const struct hm2_md *md);
 int hm2_led_export(struct hostmot2 *hm2);
 void hm2_led_write(struct hostmot2 *hm2);
 
+/* hm2_firmware.c: firmware= of the config string (registration step 2) */
+int hm2_firmware_load(struct hostmot2 *hm2);
+
 int hm2_raw_export(struct hostmot2 *hm2);
 void hm2_raw_read(struct hostmot2 *hm2);
 void hm2_raw_write(struct hostmot2 *hm2);

@@ -461,16 +461,9 @@ static int register_board(struct hm2_llio *llio, const char *config)
 		HM2_ERR(hm2, "%s", err);
 		return -EINVAL;
 	}
-	if (hm2->cfg.firmware[0]) {
-		if (!llio->program_fpga)
-			HM2_INFO(hm2, "firmware=%s ignored: this board runs the firmware in its flash",
-				 hm2->cfg.firmware);
-		else {
-			HM2_ERR(hm2, "firmware=%s: loading firmware files is not supported by this version",
-				hm2->cfg.firmware);
-			return -EINVAL;
-		}
-	}
+	rc = hm2_firmware_load(hm2);	/* firmware=: before the board is read */
+	if (rc)
+		return rc;
 	rc = hal_param_bit_newf(HAL_RW, &hm2->io_error, llio->comp_id, "%s.io_error", llio->name);
 	if (rc)
 		return rc;

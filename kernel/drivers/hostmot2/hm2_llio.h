@@ -39,7 +39,10 @@ struct hm2_llio {
 	int (*receive_queued_reads)(struct hm2_llio *llio);	/* -EAGAIN: not yet, skip a cycle */
 	int (*queue_write)(struct hm2_llio *llio, rtapi_u32 addr, const void *buf, int size);
 	int (*send_queued_writes)(struct hm2_llio *llio);
-	/* FPGA configuration (optional: NULL on boards that boot from flash) */
+	/* FPGA configuration (optional: NULL on boards that boot from flash). The core
+	 * calls reset, then program_fpga with the .BIT file's bitstream as stored in the
+	 * file; the board bit-reverses each byte if its configuration port needs it
+	 * (hm2_bitfile_reverse) and returns 0 once the FPGA says DONE. */
 	int (*program_fpga)(struct hm2_llio *llio, const void *bitstream, rtapi_u32 size);
 	int (*reset)(struct hm2_llio *llio);
 

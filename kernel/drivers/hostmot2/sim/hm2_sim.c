@@ -15,13 +15,19 @@
  * +-32767 = +-10 V), .enable-M, .watchdog-bitten (outputs) and .digital-in-M. Reads are batched (queued and
  * sent as one request per cycle); hm2_sim.K.bus-words counts the 32-bit
  * words moved; hm2_sim.K.bus-error TRUE makes every transfer fail (hostmot2's
- * io_error recovery). */
+ * io_error recovery). Boards whose real card is programmed by the driver (5i20)
+ * take firmware=: the bitstream goes, bit-reversed as on the card, into a model of
+ * the FPGA's configuration port (hm2_sim_fpgacfg.c) that raises DONE only for a
+ * Xilinx bitstream in the right bit order; until then the registers read 0. */
 #include "rtapi.h"
 #include "rtapi_app.h"
 #include "rtapi_string.h"
 #include "hal.h"
 #include "../hm2_llio.h"
 #include "hm2_sim_model.h"
+#include "hm2_sim_fpgacfg.h"
+#include "../hm2_bitfile.h"
+#include "../hm2_boards.h"
 
 MODULE_LICENSE("GPL");
 MODULE_DESCRIPTION("Simulated Mesa HostMot2 board for hostmot2");
@@ -57,6 +63,8 @@ struct sim_board {
 	rtapi_u32 wq_addr[MAX_QUEUED_WRITE_WORDS], wq_val[MAX_QUEUED_WRITE_WORDS];
 	int num_wq;
 	int registered;
+	int fault;			/* enum sim_fault, kept across programming */
+	struct hm2_sim_fpgacfg fpga;	/* done = 0: unconfigured, registers read 0 */
 };
 
 static int comp_id;
@@ -124,7 +132,7 @@ static int sim_read(struct hm2_llio *llio, rtapi_u32 addr, void *buf, int size)
 		return -EIO;
 	sync_in(b);
 	for (i = 0; i < size / 4; i++)
-		w[i] = hm2_sim_model_read(&b->model, addr + 4 * i);
+		w[i] = b->fpga.done ? hm2_sim_model_read(&b->model, addr + 4 * i) : 0;
 	sync_out(b);
 	return 0;
 }
@@ -140,7 +148,7 @@ static int sim_write(struct hm2_llio *llio, rtapi_u32 addr, const void *buf, int
 	if (bus_down(b))
 		return -EIO;
 	sync_in(b);
-	for (i = 0; i < size / 4; i++)
+	for (i = 0; i < size / 4 && b->fpga.done; i++)
 		hm2_sim_model_write(&b->model, addr + 4 * i, w[i]);
 	sync_out(b);
 	return 0;
@@ -174,7 +182,7 @@ static int sim_send_queued_reads(struct hm2_llio *llio)
 		rtapi_u32 *w = b->rq[i].buf;
 
 		for (j = 0; j < b->rq[i].size / 4; j++)
-			w[j] = hm2_sim_model_read(&b->model, b->rq[i].addr + 4 * j);
+			w[j] = b->fpga.done ? hm2_sim_model_read(&b->model, b->rq[i].addr + 4 * j) : 0;
 	}
 	b->num_rq = 0;
 	sync_out(b);
@@ -198,7 +206,7 @@ static int sim_send_queued_writes(struct hm2_llio *llio)
 		return -EIO;
 	}
 	sync_in(b);
-	for (i = 0; i < b->num_wq; i++)
+	for (i = 0; i < b->num_wq && b->fpga.done; i++)
 		hm2_sim_model_write(&b->model, b->wq_addr[i], b->wq_val[i]);
 	b->num_wq = 0;
 	sync_out(b);
@@ -220,6 +228,33 @@ static int sim_queue_write(struct hm2_llio *llio, rtapi_u32 addr, const void *bu
 		b->wq_val[b->num_wq] = w[i];
 		b->num_wq++;
 	}
+	return 0;
+}
+
+/* PROG_B: the FPGA forgets its configuration, and the model its register state */
+static int sim_reset(struct hm2_llio *llio)
+{
+	struct sim_board *b = llio->priv;
+
+	hm2_sim_fpgacfg_clear(&b->fpga);
+	return 0;
+}
+
+static int sim_program_fpga(struct hm2_llio *llio, const void *bitstream, rtapi_u32 size)
+{
+	struct sim_board *b = llio->priv;
+	const rtapi_u8 *p = bitstream;
+	rtapi_u32 i;
+
+	for (i = 0; i < size; i++)
+		hm2_sim_fpgacfg_byte(&b->fpga, hm2_bitfile_reverse(p[i]));
+	if (!b->fpga.done) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "%s: the FPGA did not assert DONE after %u bytes (%s)\n",
+				llio->name, size, b->fpga.synced ? "no DESYNC command at the end" :
+				"no Xilinx sync word in the expected bit order");
+		return -EIO;
+	}
+	hm2_sim_model_init(&b->model, b->model.layout, b->fault, rtapi_get_time());
 	return 0;
 }
 
@@ -265,6 +300,7 @@ static int setup_board(int k, const char *name, const char *cfg, const char *fau
 {
 	const struct sim_layout *l = hm2_sim_layout_find(name);
 	struct sim_board *b = &boards[k];
+	const struct hm2_board_info *info;
 	int f = SIM_FAULT_NONE, same = 0, i, rc;
 
 	if (!l) {
@@ -284,6 +320,7 @@ static int setup_board(int k, const char *name, const char *cfg, const char *fau
 		if (strcmp(boards[i].model.layout->board, l->board) == 0)
 			same++;
 	hm2_sim_model_init(&b->model, l, f, rtapi_get_time());
+	b->fault = f;
 	rtapi_snprintf(b->llio.name, sizeof(b->llio.name), "hm2_%s.%d", l->board, same);
 	b->llio.comp_id = comp_id;
 	b->llio.num_ioport_connectors = l->ports;
@@ -301,6 +338,13 @@ static int setup_board(int k, const char *name, const char *cfg, const char *fau
 	b->llio.queue_write = sim_queue_write;
 	b->llio.send_queued_writes = sim_send_queued_writes;
 	b->llio.priv = b;
+	b->fpga.done = 1;	/* configured by an earlier load, until firmware= resets it */
+	info = hm2_board_find(l->board);
+	if (info && info->config != HM2_CFG_FLASH) {
+		b->llio.fpga_part_number = info->part[0];
+		b->llio.reset = sim_reset;
+		b->llio.program_fpga = sim_program_fpga;
+	}
 	rc = export_board(b, k);
 	if (rc)
 		return rc;
