@@ -2,13 +2,13 @@
 // module_deps.cpp - undefined dynamic symbols of a module, and who defines them.
 #include "module_deps.hpp"
 
-#include <dlfcn.h>
 #include <elf.h>
 
 #include <algorithm>
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <set>
 
 namespace hal {
@@ -28,9 +28,10 @@ const T* at(const std::vector<char>& img, std::uint64_t off, std::uint64_t count
     return reinterpret_cast<const T*>(img.data() + off);
 }
 
-// Names of the global/weak undefined symbols in .dynsym (64-bit ELF only: the
-// only kind rtapi_app loads).
-std::vector<std::string> undefined_symbols(const std::vector<char>& img)
+// Names of the global/weak symbols in .dynsym that 'so' leaves undefined
+// (defined = false) or defines (defined = true). 64-bit ELF only: the only kind
+// rtapi_app loads.
+std::vector<std::string> dynamic_symbols(const std::vector<char>& img, bool defined)
 {
     std::vector<std::string> names;
     const auto* eh = at<Elf64_Ehdr>(img, 0);
@@ -51,7 +52,8 @@ std::vector<std::string> undefined_symbols(const std::vector<char>& img)
             continue;
         for (std::uint64_t k = 0; k < sh[i].sh_size / sizeof(Elf64_Sym); ++k) {
             int bind = ELF64_ST_BIND(syms[k].st_info);
-            if (syms[k].st_shndx != SHN_UNDEF || (bind != STB_GLOBAL && bind != STB_WEAK) ||
+            bool is_defined = syms[k].st_shndx != SHN_UNDEF;
+            if (is_defined != defined || (bind != STB_GLOBAL && bind != STB_WEAK) ||
                 syms[k].st_name == 0 || syms[k].st_name >= strtab.sh_size)
                 continue;
             const char* name = str + syms[k].st_name;
@@ -62,27 +64,45 @@ std::vector<std::string> undefined_symbols(const std::vector<char>& img)
     return names;
 }
 
+// The symbols a file defines, read once per file and modification time: a
+// module is parsed again only when it was rebuilt.
+const std::set<std::string>& defined_symbols(const std::filesystem::path& p)
+{
+    struct Entry {
+        std::filesystem::file_time_type mtime;
+        std::set<std::string> names;
+    };
+    static std::map<std::filesystem::path, Entry> cache;
+    std::error_code ec;
+    auto mtime = std::filesystem::last_write_time(p, ec);
+    auto it = cache.find(p);
+    if (it == cache.end() || it->second.mtime != mtime) {
+        auto list = dynamic_symbols(read_file(p), true);
+        it = cache.insert_or_assign(p, Entry{mtime, {list.begin(), list.end()}}).first;
+    }
+    return it->second.names;
+}
+
 }  // namespace
 
 std::vector<std::string> modules_bound_by(const std::filesystem::path& so,
                                           const std::vector<ModuleFile>& loaded)
 {
+    // Not dlsym(RTLD_DEFAULT): glibc then records the defining object as a
+    // dependency of rtapi_app itself, and it could never be unmapped again. The
+    // global scope is searched in order: rtapi_app, then the modules as loaded.
     std::set<std::string> users;
     if (loaded.empty())
         return {};
-    std::error_code ec;
-    std::vector<std::pair<std::filesystem::path, std::string>> files;
-    for (const ModuleFile& m : loaded)
-        files.emplace_back(std::filesystem::weakly_canonical(m.path, ec), m.name);
-    for (const std::string& sym : undefined_symbols(read_file(so))) {
-        void* addr = dlsym(RTLD_DEFAULT, sym.c_str());  // the scope RTLD_NOW bound it in
-        Dl_info info{};
-        if (!addr || !dladdr(addr, &info) || !info.dli_fname)
+    const std::set<std::string>& host = defined_symbols("/proc/self/exe");
+    for (const std::string& sym : dynamic_symbols(read_file(so), false)) {
+        if (host.count(sym))
             continue;
-        auto where = std::filesystem::weakly_canonical(info.dli_fname, ec);
-        for (const auto& [path, name] : files)
-            if (path == where)
-                users.insert(name);
+        for (const ModuleFile& m : loaded)
+            if (defined_symbols(m.path).count(sym)) {
+                users.insert(m.name);
+                break;
+            }
     }
     return {users.begin(), users.end()};
 }

@@ -2,8 +2,9 @@
 // module_deps.hpp - which loaded modules a freshly dlopen()ed module binds to.
 // The kernel refuses to remove a module whose exports another module uses
 // ("in use"); rtapi_app gets the same rule from this: the undefined symbols of
-// the new module's dynamic symbol table, looked up in the global scope its
-// RTLD_NOW binding used, and mapped back to the object that defines them.
+// the new module's dynamic symbol table, matched against what rtapi_app and the
+// loaded modules define, in the global scope's search order (ELF files only; no
+// dynamic-linker calls, which would pin the objects in memory).
 #pragma once
 
 #include <filesystem>
