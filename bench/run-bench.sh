@@ -87,6 +87,9 @@ echo "== stepgen: maximum step rates and make-pulses cost"
 echo "== kinematics: ns per forward / inverse call of each module"
 "$build/bin/kins_bench"
 
+echo "== trajectory planner: cost per cycle, shortest segment reaching feed"
+"$build/bin/tp_bench"
+
 echo "== hostmot2: hm2 read + write per cycle, simulated 5i25+7i76 layout (simulated flavor)"
 "$here/hostmot2-bench.sh" "$build" 3
 

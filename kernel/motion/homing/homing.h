@@ -48,10 +48,11 @@
  *     4. fault check / set_operating_mode: on any disable, do_cancel_homing(-1).
  *     5. only in FREE state: fill struct homing_joint of every joint (fields marked
  *        "motmod ->"), call do_homing(period_ns), copy back the fields marked
- *        "homing ->" and "both"; if do_homing() returned true, request TELEOP.
+ *        "homing ->" and "both" (all of them, every joint, homing or not: see the
+ *        struct); if do_homing() returned true, request TELEOP.
  *        (motmod may also keep struct homing_joint as its own storage of these values.)
  *     6. the free planner runs with free_pos_cmd / free_vel_lim / free_tp_enable as
- *        homing left them while get_homing(j) (homing owns them then).
+ *        homing left them (homing owns them while get_homing(j)).
  *     7. write_homing_out_pins()                     (motion.md 3, step 15)
  * Errors (the texts of motion.md 9) are given to the report function of homing_init(),
  * one formatted line each, from realtime context (motmod puts them in its error ring). */
@@ -144,7 +145,12 @@ struct homing_joint {
 	double pos_fb;		/* joint.N.pos-fb */
 	double motor_offset;	/* joint.N.motor-offset */
 	double free_pos;	/* the free planner's current position (simple_tp curr_pos) */
-	/* homing -> (only changed while get_homing(j); otherwise left as motmod wrote them) */
+	/* homing -> : motmod copies these three back after EVERY do_homing(), whatever
+	 * get_homing(j) says. Homing changes them only for a joint it homes, but also in
+	 * the period that ends the homing: an abort (limit, end of move, bad switch)
+	 * stops the planner (free_tp_enable = FALSE) and an absolute-encoder home shifts
+	 * free_pos_cmd, both in a period after which get_homing(j) is already FALSE.
+	 * Otherwise homing leaves them as motmod wrote them. */
 	double free_pos_cmd;	/* free planner target (joint.N.free-pos-cmd) */
 	double free_vel_lim;	/* free planner velocity limit (joint.N.free-vel-lim) */
 	bool free_tp_enable;	/* free planner enable (joint.N.free-tp-enable); FALSE = stop */
@@ -202,9 +208,11 @@ int set_unhomed(int jno, int motion_state);
 /* Run one period (FREE state only). period_ns: the servo period (times HOME_DELAY).
  * Returns true in the period in which "all homed" became true. */
 bool do_homing(long period_ns);
-/* A probe trip cancels homing: if get_homing_is_active(), cancel all and (unless
- * no_probe_home_error) report "Probe tripped during homing motion.". Returns true
- * if homing was active. */
+/* A probe trip cancels homing: unless no_probe_home_error (the probe may be a home
+ * switch then), if get_homing_is_active(): cancel all and report "Probe tripped
+ * during homing motion.". Returns true when it cancelled. Like do_cancel_homing(),
+ * called outside do_homing(): motmod then stops the free planners of the joints
+ * that were homing itself (or they run on to the far end of the search move). */
 bool homing_probe_trip(bool no_probe_home_error);
 
 /* --- getters (homing_core.c, no FP), j = joint number --- */

@@ -521,9 +521,14 @@ bool do_homing(long period_ns)
 	for (j = 0; j < homing_g.num_joints; j++)
 		homing_g.h[j].move_started = false;
 	sequence_step();
-	for (j = 0; j < homing_g.num_joints; j++)
-		if (homing_g.joints[j].active)
+	for (j = 0; j < homing_g.num_joints; j++) {
+		if (homing_g.joints[j].active) {
 			home_one_joint(j, period_ns);
+		} else if (homing_g.h[j].state != HOME_IDLE || homing_g.h[j].homing) {
+			abort_joint(j);		/* deactivated while homing */
+			abort_group_of(j);
+		}
+	}
 	return !was_allhomed && get_allhomed();
 }
 

@@ -135,7 +135,7 @@ struct tp_outputs {
 	int aout_count;
 	struct tp_aout aout[TP_SEG_AIO_MAX];
 	/* Spindle synchronisation. */
-	int spindle_sync;		/* a spindle-synchronized segment is executing */
+	int spindle_sync;		/* the head segment is spindle-synchronized (waiting or moving) */
 	int spindle_num;		/* spindle of that segment */
 	int spindle_index_request;	/* set spindle.S.index-enable this period (position sync start) */
 	int waiting_for_index;		/* waiting for the index (spindle.S.index-enable to clear) */

@@ -241,3 +241,18 @@ TEST(HomingSetup, RejectsBadArguments)
 	EXPECT_EQ(homing_setup(2, 0, 0, nullptr, nullptr), -EINVAL);
 	EXPECT_EQ(homing_setup(2, 0, 0, j, nullptr), 0);
 }
+
+TEST(HomingCommand, DeactivatedWhileHomingAborts)
+{
+	Sim sim(1);
+	switch_joint(sim, 0);
+	ASSERT_EQ(do_home_joint(0), 0);
+	for (int i = 0; i < 300; i++)
+		sim.step();
+	ASSERT_TRUE(get_homing(0));
+	sim.hj(0).active = false;
+	sim.step();
+	EXPECT_FALSE(get_homing(0));
+	EXPECT_FALSE(get_homing_is_active());
+	EXPECT_FALSE(sim.hj(0).free_tp_enable);
+}
