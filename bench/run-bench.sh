@@ -90,6 +90,9 @@ echo "== kinematics: ns per forward / inverse call of each module"
 echo "== trajectory planner: cost per cycle, shortest segment reaching feed"
 "$build/bin/tp_bench"
 
+echo "== motion controller (motmod): cost per servo period with a full look-ahead queue"
+"$here/motion-bench.sh" "$build"
+
 echo "== hostmot2: hm2 read + write per cycle, simulated 5i25+7i76 layout (simulated flavor)"
 "$here/hostmot2-bench.sh" "$build" 3
 
