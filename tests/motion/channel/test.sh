@@ -19,17 +19,17 @@ echo "status $?"
 motcmd --bogus
 echo "status $?"
 # a writer that holds the channel (claimed by its first command) while it waits
-printf 'free\nwait-state coord 3\n' >hold.cmd
-motcmd -f hold.cmd >/dev/null &
+printf 'free\nwait-state coord 3\n' >"$T/hold.cmd"
+motcmd -f "$T/hold.cmd" >/dev/null &
 holder=$!
 i=0
 while [ "$(motcmd status | sed -n 2p | cut -d' ' -f2)" != FREE ] && [ $i -lt 200 ]; do
 	sleep 0.01
 	i=$((i + 1))
 done
-motcmd disable >second.txt 2>&1
+motcmd disable >"$T/second.txt" 2>&1
 echo "second writer status $?"
-sed 's/pid [0-9]*/pid N/' second.txt
+sed 's/pid [0-9]*/pid N/' "$T/second.txt"
 wait $holder
 motcmd disable
 echo "after the holder: status $?"
