@@ -139,3 +139,44 @@ TEST(TpSync, RigidTapGoesDownReversesAndReturns)
 	tp_set_spindle_sync(s.tp, 0, 0, 0);
 	EXPECT_EQ(tp_add_rigid_tap(s.tp, &p, 1.0, &m), TP_ERR_NO_SYNC);
 }
+
+TEST(TpSync, ChainOfSynchronizedSegmentsStaysInPhase)
+{
+	// G33 along z in two collinear pieces, blended: one index wait, one phase
+	TpSim s;
+	const double K = 2.0;
+	tp_set_term_cond(s.tp, TP_TERM_PARABOLIC, 0.01);
+	tp_set_spindle_sync(s.tp, 0, K, 0);
+	s.line(0, 0, -30, 100, 1);
+	s.line(0, 0, -60, 100, 2);
+	s.in.spindle_speed = 10;
+	int requests = 0;
+	double revs = 0, lag = 0;
+	bool locked = false;
+	for (int n = 0; n < 20000; n++) {
+		s.in.spindle_revs = revs;
+		const tp_outputs &o = s.cycle();
+		requests += o.spindle_index_request;
+		if (o.spindle_index_request)
+			s.in.spindle_index_enable = 1;
+		else if (s.in.spindle_index_enable) {
+			s.in.spindle_index_enable = 0;	// the index: revs restart at 0
+			revs = 0;
+			continue;
+		}
+		if (o.done)
+			break;
+		if (n > 300 && o.pos.z > -59) {
+			double l = revs * K + o.pos.z;
+			if (!locked) {
+				lag = l;
+				locked = true;
+			}
+			EXPECT_NEAR(l, lag, 1e-9) << "cycle " << n << " z " << o.pos.z;
+		}
+		revs += s.in.spindle_speed * s.dt;
+	}
+	EXPECT_EQ(requests, 1);
+	EXPECT_DOUBLE_EQ(s.pos()[2], -60);
+	EXPECT_LE(s.worst_acc_ratio(), 1 + 1e-6);
+}
