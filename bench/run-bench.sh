@@ -93,6 +93,9 @@ echo "== trajectory planner: cost per cycle, shortest segment reaching feed"
 echo "== interpreter: RS274NGC blocks per second, generated G1 program (in memory)"
 if [ "$quick" = 1 ]; then "$build/bin/interp_bench" 100000; else "$build/bin/interp_bench" 1000000; fi
 
+echo "== motion controller (motmod): cost per servo period with a full look-ahead queue"
+"$here/motion-bench.sh" "$build"
+
 echo "== hostmot2: hm2 read + write per cycle, simulated 5i25+7i76 layout (simulated flavor)"
 "$here/hostmot2-bench.sh" "$build" 3
 

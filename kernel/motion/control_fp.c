@@ -312,7 +312,13 @@ static void run_homing(struct motmod *m)
 		h->free_tp_enable = jt->free.enable;
 	}
 	if (do_homing(m->servo_period_ns))
+		m->teleop_after_homing = true;
+	/* TELEOP once homing has wound down its sequence too (the period after all
+	 * joints are homed, homing still closes its Home-All sequence) */
+	if (m->teleop_after_homing && !get_homing_is_active()) {
+		m->teleop_after_homing = false;
 		m->teleop_req = true;
+	}
 	for (j = 0; j < m->num_joints; j++) {
 		struct mot_joint *jt = &m->joint[j];
 		struct homing_joint *h = &m->hj[j];

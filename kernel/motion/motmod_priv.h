@@ -147,6 +147,7 @@ struct motmod {
 	bool enable_req, disable_req, free_req, teleop_req, coord_req;
 	bool paused, stepping, on_soft_limit, soft_limit_reported;
 	bool all_homed;
+	bool teleop_after_homing;	/* Home-All done: TELEOP when homing is idle */
 	rtapi_u32 override_mask;
 	int enables_new;
 	double feed_scale, rapid_scale, net_feed_scale, max_feed_scale;

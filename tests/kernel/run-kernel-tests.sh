@@ -35,7 +35,7 @@ build_static() {
 	# userspace components for tests/usercomp, halmeter, shuttlexpress (halmeter without
 	# GTK, which cannot link statically; hal_input and gs2_vfd need libudev/libmodbus,
 	# which Debian has only as shared libraries: their tests are host-only)
-	cmake --build "$static" -j"$(nproc)" --target hal_testcomp halmeter shuttlexpress >>"$static.log" 2>&1 ||
+	cmake --build "$static" -j"$(nproc)" --target hal_testcomp halmeter shuttlexpress motcmd >>"$static.log" 2>&1 ||
 		{ cat "$static.log" >&2; exit 1; }
 }
 
@@ -92,7 +92,7 @@ done
 for tool in halcmd halrun realtime halsampler halstreamer emc_module_helper; do
 	strip -o "$ird/bin/$tool" "$static/bin/$tool"
 done
-for tool in hal_testcomp halmeter shuttlexpress; do
+for tool in hal_testcomp halmeter shuttlexpress motcmd; do
 	strip -o "$ird/bin/$tool" "$static/bin/$tool"
 done
 # the HAL-level tests: every tests/<component>/<case>/ (not unit/, not kernel/), or

@@ -1,4 +1,6 @@
 # lib.sh - sourced by the motion cases' test.sh (cwd: the case directory).
+# T: a scratch directory for the case's files (removed at exit; the case directory
+#   is the source tree).
 # motion_load JOINTS [MOTMOD PARAMS...]: lock-step threads, trivkins, motmod with its
 #   two functions on servo-thread, every joint looped back (motor-pos-cmd ->
 #   motor-pos-fb, an ideal drive); not started.
@@ -8,6 +10,9 @@
 # motion_analyze DT < samples: max |velocity|, max |acceleration| and the final
 #   position from positions sampled every period (column 1, scaled by 1e6 so the six
 #   printed decimals keep 1e-12 units).
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+
 motion_load() {
 	n=$1
 	shift
@@ -36,10 +41,10 @@ motion_sample() {
 
 motion_config() {
 	n=$1 vel=${2:-10} acc=${3:-100}
-	: >config.cmd
+	: >"$T/config.cmd"
 	j=0
 	while [ $j -lt $n ]; do
-		cat >>config.cmd <<CMDS
+		cat >>"$T/config.cmd" <<CMDS
 set-joint-limits $j -100 100
 set-joint-vel $j $vel
 set-joint-acc $j $acc
@@ -49,13 +54,13 @@ CMDS
 		j=$((j + 1))
 	done
 	for l in x y z; do
-		cat >>config.cmd <<CMDS
+		cat >>"$T/config.cmd" <<CMDS
 set-axis-limits $l -100 100
 set-axis-vel $l $vel
 set-axis-acc $l $acc
 CMDS
 	done
-	motcmd -f config.cmd || exit 1
+	motcmd -f "$T/config.cmd" || exit 1
 }
 
 capture_start() {

@@ -27,6 +27,7 @@ struct Options {
     int key = MOTION_DEFAULT_KEY;
     std::chrono::milliseconds timeout{5000};
     int id = 0;
+    long force_number = -1;  // --force-number: write this command number (tests)
     std::string file;
     std::vector<std::string> words;
 };
@@ -99,7 +100,7 @@ int wait_for(MotionClient& c, double wait_s, const char* what, Pred pred)
 int send(MotionClient& c, const Options& o, motion_command cmd)
 {
     cmd.id = o.id ? o.id : cmd.id;
-    auto r = c.send(cmd, o.timeout);
+    auto r = c.send(cmd, o.timeout, o.force_number);
     if (!r) {
         std::fprintf(stderr, "motcmd: %s\n", r.error().message.c_str());
         return kExitChannel;
@@ -194,7 +195,7 @@ int parse_options(int argc, char** argv, Options& o)
             std::fputs(motcmd_usage(), stdout);
             return -1;
         }
-        if (a == "--key" || a == "--timeout" || a == "--id" || a == "-f") {
+        if (a == "--key" || a == "--timeout" || a == "--id" || a == "-f" || a == "--force-number") {
             const char* v = value(a.c_str());
             if (!v)
                 return kExitUsage;
@@ -212,6 +213,8 @@ int parse_options(int argc, char** argv, Options& o)
                 o.key = static_cast<int>(n);
             else if (a == "--timeout")
                 o.timeout = std::chrono::milliseconds(n);
+            else if (a == "--force-number")
+                o.force_number = n;
             else
                 o.id = static_cast<int>(n);
             continue;

@@ -346,7 +346,7 @@ const char* motcmd_usage()
 {
     static std::string text = [] {
         std::string s =
-            "usage: motcmd [--key N] [--timeout MS] [--id LINE] COMMAND [ARGS...]\n"
+            "usage: motcmd [--key N] [--timeout MS] [--id LINE] [--force-number N] COMMAND [ARGS...]\n"
             "       motcmd [options] -f FILE     (one command per line, # comments)\n"
             "Sends one command to motmod's command channel, prints its result; 'status'\n"
             "prints motion's status. Exit: 0 done, 1 refused by motion / wait timed out,\n"

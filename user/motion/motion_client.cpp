@@ -95,12 +95,14 @@ Result<void> MotionClient::claim_writer()
     return Error{-EBUSY, "another process is sending motion commands"};
 }
 
-Result<int> MotionClient::send(motion_command cmd, std::chrono::milliseconds timeout)
+Result<int> MotionClient::send(motion_command cmd, std::chrono::milliseconds timeout,
+                               long force_number)
 {
     if (!is_writer_)
         if (auto r = claim_writer(); !r)
             return r.error();
-    uint32_t num = __atomic_load_n(&shm_->status.commandNumEcho, __ATOMIC_ACQUIRE) + 1;
+    uint32_t num = force_number >= 0 ? static_cast<uint32_t>(force_number)
+                                     : __atomic_load_n(&shm_->status.commandNumEcho, __ATOMIC_ACQUIRE) + 1;
     cmd.commandNum = 0;
     // every field first, the number last: the handler takes the command when it changes
     std::memcpy(&shm_->command, &cmd, offsetof(motion_command, commandNum));

@@ -28,9 +28,11 @@ public:
 
     // Become the writer (hdr.writer_pid): refused while another live process holds it.
     Result<void> claim_writer();
-    // Send one command (command and its fields; commandNum is set here) and wait up
-    // to timeout for motion to echo it. Returns the commandStatus (MOTION_CMD_*).
-    Result<int> send(motion_command cmd, std::chrono::milliseconds timeout);
+    // Send one command (command and its fields; commandNum is set here: the echo + 1,
+    // or force_number >= 0 to test motion's sequence check) and wait up to timeout for
+    // motion to echo it. Returns the commandStatus (MOTION_CMD_*).
+    Result<int> send(motion_command cmd, std::chrono::milliseconds timeout,
+                     long force_number = -1);
     // A consistent copy of the status (head == tail around the copy).
     Result<motion_status> status(std::chrono::milliseconds timeout) const;
     // Messages queued since the last call (oldest first), and how many were lost

@@ -14,7 +14,7 @@ show() {
 		"$(halcmd getp joint.0.pos-cmd)" "$(halcmd getp joint.0.motor-pos-cmd)" \
 		"$(halcmd getp joint.0.backlash-filt)"
 }
-capture_start filt.txt
+capture_start "$T/filt.txt"
 motcmd jog-incr 0 1 5 || exit 1
 motcmd wait-inpos 5 || exit 1
 show forward
@@ -22,16 +22,16 @@ motcmd jog-incr 0 -1 5 || exit 1
 motcmd wait-inpos 5 || exit 1
 show back
 capture_stop
-echo "comp filter: $(motion_analyze 0.001 <filt.txt | cut -d' ' -f1-4) (limits 5, 50)"
+echo "comp filter: $(motion_analyze 0.001 <"$T/filt.txt" | cut -d' ' -f1-4) (limits 5, 50)"
 echo "== comp table"
-cat >comp.txt <<COMP
+cat >"$T/comp.txt" <<COMP
 -10 -10.01 -9.98
 0 0.02 -0.02
 10 9.99 10.03
 not a line: reading stops here
 20 1 1
 COMP
-motcmd comp-file 0 comp.txt 0 || exit 1
+motcmd comp-file 0 "$T/comp.txt" 0 || exit 1
 motcmd jog-abs 0 5 5 || exit 1
 motcmd wait-inpos 5 || exit 1
 show "forward to 5"
