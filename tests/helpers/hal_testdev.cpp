@@ -89,16 +89,35 @@ void wait_node(const std::string& node)
             fail(node + " did not appear");
 }
 
-// One input line split into words; false at end of input.
-bool next_command(std::istringstream& words)
-{
-    char line[256];
-    if (!std::fgets(line, sizeof(line), stdin))
-        return false;
-    words.clear();
-    words.str(line);
-    return true;
-}
+// The command lines on stdin, read with read(2) as poll(2) reports them (stdio would
+// buffer lines that poll then no longer sees).
+class LineReader {
+public:
+    // Reads what is there; false at end of input.
+    bool fill()
+    {
+        char buf[512];
+        ssize_t n = read(STDIN_FILENO, buf, sizeof(buf));
+        if (n < 0)
+            return errno == EINTR || errno == EAGAIN;
+        pending_.append(buf, static_cast<size_t>(n));
+        return n > 0;
+    }
+    // The next complete line as words; false when none is complete.
+    bool next(std::istringstream& words)
+    {
+        size_t nl = pending_.find('\n');
+        if (nl == std::string::npos)
+            return false;
+        words.clear();
+        words.str(pending_.substr(0, nl));
+        pending_.erase(0, nl + 1);
+        return true;
+    }
+
+private:
+    std::string pending_;
+};
 
 long number(std::istringstream& words, const std::string& cmd)
 {
@@ -181,11 +200,42 @@ void uinput_drain(int fd)
             say("led " + std::to_string(ev.code) + " " + std::to_string(ev.value));
 }
 
+// One command line; false for "quit". fd is -1 while the device is destroyed.
+bool uinput_command(int& fd, const std::string& name, std::istringstream& words)
+{
+    std::string cmd;
+    if (!(words >> cmd))
+        return true;
+    if (cmd == "quit")
+        return false;
+    if (cmd == "create") {
+        if (fd < 0)
+            fd = uinput_create(name);
+    } else if (cmd == "destroy") {
+        if (fd >= 0) {
+            ioctl(fd, UI_DEV_DESTROY);
+            close(fd);
+            fd = -1;
+        }
+        say("gone");
+    } else if (cmd == "key" || cmd == "abs" || cmd == "rel") {
+        if (fd < 0)
+            fail("'" + cmd + "': the device is destroyed");
+        int code = static_cast<int>(number(words, cmd));
+        int value = static_cast<int>(number(words, cmd));
+        uinput_emit(fd, cmd == "key" ? EV_KEY : cmd == "abs" ? EV_ABS : EV_REL, code, value);
+    } else {
+        fail("unknown command '" + cmd + "'");
+    }
+    return true;
+}
+
 int run_uinput(const std::string& name)
 {
     int fd = uinput_create(name);
+    LineReader input;
     std::istringstream words;
-    for (;;) {
+    for (bool running = true; running;) {
         pollfd p[2] = {{STDIN_FILENO, POLLIN, 0}, {fd, POLLIN, 0}};
         if (poll(p, fd >= 0 ? 2 : 1, -1) < 0)
             continue;
@@ -193,32 +243,9 @@ int run_uinput(const std::string& name)
             uinput_drain(fd);
         if (!(p[0].revents & (POLLIN | POLLHUP)))
             continue;
-        if (!next_command(words))
-            break;
-        std::string cmd;
-        if (!(words >> cmd))
-            continue;
-        if (cmd == "quit")
-            break;
-        if (cmd == "create") {
-            if (fd < 0)
-                fd = uinput_create(name);
-        } else if (cmd == "destroy") {
-            if (fd >= 0) {
-                ioctl(fd, UI_DEV_DESTROY);
-                close(fd);
-                fd = -1;
-            }
-            say("gone");
-        } else if (cmd == "key" || cmd == "abs" || cmd == "rel") {
-            if (fd < 0)
-                fail("'" + cmd + "': the device is destroyed");
-            int code = static_cast<int>(number(words, cmd));
-            int value = static_cast<int>(number(words, cmd));
-            uinput_emit(fd, cmd == "key" ? EV_KEY : cmd == "abs" ? EV_ABS : EV_REL, code, value);
-        } else {
-            fail("unknown command '" + cmd + "'");
-        }
+        running = input.fill();
+        while (running && input.next(words))
+            running = uinput_command(fd, name, words);
     }
     if (fd >= 0) {
         ioctl(fd, UI_DEV_DESTROY);
@@ -342,11 +369,47 @@ void uhid_drain(int fd)
     }
 }
 
+// One command line; false for "quit". fd is -1 while the device is destroyed.
+bool uhid_command(int& fd, std::istringstream& words)
+{
+    std::string cmd;
+    if (!(words >> cmd))
+        return true;
+    if (cmd == "quit")
+        return false;
+    if (cmd == "create") {
+        if (fd < 0)
+            fd = uhid_create();
+    } else if (cmd == "destroy") {
+        if (fd >= 0) {
+            uhid_event ev{};
+            ev.type = UHID_DESTROY;
+            uhid_write(fd, ev);
+            close(fd);
+            fd = -1;
+        }
+        say("gone");
+    } else if (cmd == "report") {
+        if (fd < 0)
+            fail("'report': the device is destroyed");
+        uhid_event ev{};
+        ev.type = UHID_INPUT2;
+        ev.u.input2.size = 5;
+        for (int i = 0; i < 5; i++)
+            ev.u.input2.data[i] = static_cast<__u8>(number(words, cmd));
+        uhid_write(fd, ev);
+    } else {
+        fail("unknown command '" + cmd + "'");
+    }
+    return true;
+}
+
 int run_uhid()
 {
     int fd = uhid_create();
+    LineReader input;
     std::istringstream words;
-    for (;;) {
+    for (bool running = true; running;) {
         pollfd p[2] = {{STDIN_FILENO, POLLIN, 0}, {fd, POLLIN, 0}};
         if (poll(p, fd >= 0 ? 2 : 1, -1) < 0)
             continue;
@@ -354,37 +417,9 @@ int run_uhid()
             uhid_drain(fd);
         if (!(p[0].revents & (POLLIN | POLLHUP)))
             continue;
-        if (!next_command(words))
-            break;
-        std::string cmd;
-        if (!(words >> cmd))
-            continue;
-        if (cmd == "quit")
-            break;
-        if (cmd == "create") {
-            if (fd < 0)
-                fd = uhid_create();
-        } else if (cmd == "destroy") {
-            if (fd >= 0) {
-                uhid_event ev{};
-                ev.type = UHID_DESTROY;
-                uhid_write(fd, ev);
-                close(fd);
-                fd = -1;
-            }
-            say("gone");
-        } else if (cmd == "report") {
-            if (fd < 0)
-                fail("'report': the device is destroyed");
-            uhid_event ev{};
-            ev.type = UHID_INPUT2;
-            ev.u.input2.size = 5;
-            for (int i = 0; i < 5; i++)
-                ev.u.input2.data[i] = static_cast<__u8>(number(words, cmd));
-            uhid_write(fd, ev);
-        } else {
-            fail("unknown command '" + cmd + "'");
-        }
+        running = input.fill();
+        while (running && input.next(words))
+            running = uhid_command(fd, words);
     }
     if (fd >= 0)
         close(fd);            // closing /dev/uhid destroys the device
