@@ -107,11 +107,10 @@ ldd "$static/bin/hal_input" "$static/bin/gs2_vfd" "$static/bin/gs2_sim" 2>/dev/n
 		mkdir -p "$ird${lib%/*}"
 		[ -e "$ird$lib" ] || cp -L "$lib" "$ird$lib"
 	done
-# the kernel's modules for the device tests of cases/40-devices.sh: evdev, uinput,
-# hid, uhid, hid-generic for the virtual input devices, parport and parport_pc for
-# hal_parport on a port Linux drives (Debian builds them as modules)
+# the kernel's modules for the virtual input devices of cases/40-devices.sh: evdev,
+# uinput, hid, uhid, hid-generic (Debian builds them as modules)
 mkdir -p "$ird/lib/testdev-modules"
-for m in input/evdev input/misc/uinput hid/hid hid/uhid hid/hid-generic parport/parport parport/parport_pc; do
+for m in input/evdev input/misc/uinput hid/hid hid/uhid hid/hid-generic; do
 	cp "/lib/modules/$kver/kernel/drivers/$m.ko" "$ird/lib/testdev-modules/" ||
 		{ echo "no /lib/modules/$kver/kernel/drivers/$m.ko: install linux-image-$kver" >&2; exit 2; }
 done
