@@ -98,6 +98,15 @@ run_one() {
 		echo "SKIP $rel"
 		return
 	fi
+	# needs-devices: device nodes the test must be able to write (e.g. /dev/uinput)
+	local dev
+	for dev in $(cat "$dir/needs-devices" 2>/dev/null); do
+		if [ ! -w "$dev" ]; then
+			echo SKIP > "$out/status"
+			echo "SKIP $rel (needs a writable $dev)"
+			return
+		fi
+	done
 	local instance=$(( instance_base + idx )) limit=$timeout_s
 	# a long test (tests/robustness/fault-injection) states its own bound
 	[ -f "$dir/timeout-seconds" ] && limit=$(cat "$dir/timeout-seconds")

@@ -7,6 +7,8 @@
 mount -t proc proc /proc
 mount -t sysfs sysfs /sys
 mount -t devtmpfs devtmpfs /dev
+# pseudo-terminals: gs2_vfd's test puts its simulated drive on one
+mkdir -p /dev/pts && mount -t devpts -o mode=620,ptmxmode=666 devpts /dev/pts
 export PATH=/bin:/sbin:/tests PATH_MOD=/lib/hal/modules/$(uname -r)
 # Users as docs/kernel-security.md describes them (accounts made by run-kernel-tests.sh):
 # group 'hal' (gid 990) with user 'haluser' (uid 1000) in it, 'nobody' (65534) outside

@@ -1,7 +1,7 @@
 #!/bin/sh
 # run-hal-tests-vm.sh TESTS_DIR - the HAL-level tests inside the kernel-test VM, in
 # the kernel flavor: tests/run-hal-tests.sh's rules (test.hal or test.sh, expected or
-# checkresult, expected-status, skip-flavor-kernel) in POSIX sh for busybox, one test
+# checkresult, expected-status, skip-flavor-kernel, needs-devices) in POSIX sh for busybox, one test
 # at a time (the kernel has one HAL). Prints "HALTEST PASS|FAIL|SKIP <dir>" per test,
 # "| " + the diff or reason under a failure, and a summary line; exit 1 on a failure.
 tests=${1:?usage: run-hal-tests-vm.sh TESTS_DIR}
@@ -13,8 +13,18 @@ pass=0 fail=0 skip=0
 for t in $(find "$tests" \( -name test.hal -o -name test.sh \) -type f | sort); do
 	dir=${t%/*}
 	rel=${dir#"$tests"/}
+	# HAL_TEST_DEVICES_ONLY=1 (cases/40-devices.sh, as root): only the needs-devices tests
+	[ -z "${HAL_TEST_DEVICES_ONLY:-}" ] || [ -e "$dir/needs-devices" ] || continue
 	if [ -e "$dir/skip-flavor-kernel" ]; then
 		echo "HALTEST SKIP $rel"; skip=$((skip + 1)); continue
+	fi
+	missing=
+	for dev in $(cat "$dir/needs-devices" 2>/dev/null); do
+		[ -w "$dev" ] || missing=$dev
+	done
+	if [ -n "$missing" ]; then
+		echo "HALTEST SKIP $rel (needs a writable $missing: run by cases/40-devices.sh)"
+		skip=$((skip + 1)); continue
 	fi
 	if [ -e "$dir/needs-python" ] && ! command -v python3 >/dev/null 2>&1; then
 		echo "HALTEST SKIP $rel (no python3 in the VM: built with KTEST_PYTHON=0)"; skip=$((skip + 1)); continue

@@ -3,13 +3,16 @@
 # linux-headers-<ver>-amd64 and static halcmd/halrun/halsampler/halstreamer/
 # emc_module_helper (build/static), packs them with busybox, the HAL-level tests
 # (tests/*/*/) and tests/kernel/cases into an initramfs, boots /boot/vmlinuz-<ver>
-# in qemu (TCG, no KVM needed), runs the cases inside (10-hal-suite runs the whole
+# in qemu (TCG, no KVM needed; with an LPT at 0x378 and a second 16550 at 0x2f8 for
+# cases/40-devices.sh), runs the cases inside (10-hal-suite runs the whole
 # HAL-level suite in the kernel flavor) and reports from the serial console.
 # Usage: run-kernel-tests.sh [KERNEL_RELEASE...]   (default: newest installed non-rt
 #        -amd64; e.g. 6.1.0-56-rt-amd64 for the PREEMPT_RT kernel). Several kernels
 #        are tested in parallel VMs (7.5 min for both Debian kernels on 2 cores, 11 min
 #        one after the other), each one's report printed when all are done.
 # Python 3 and the hal module go into the VM (tests/python run there); KTEST_PYTHON=0 leaves them out.
+# While iterating: KTEST_HAL_DIRS="hal_input serport" packs only those HAL test dirs,
+# KTEST_CASES="10 40" runs only the cases whose names start so (e.g. 10-hal-suite).
 # Needs: scripts/kernel-test-deps. Exit 0 when every case passed.
 set -eu
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -32,10 +35,12 @@ build_static() {
 	  cmake --build "$static" -j"$(nproc)" --target halcmd halrun realtime halsampler halstreamer emc_module_helper \
 		thread_cost dispatch_cost $([ "${KTEST_PYTHON:-1}" = 0 ] || echo pyhal)
 	} >"$static.log" 2>&1 || { cat "$static.log" >&2; exit 1; }
-	# userspace components for tests/usercomp, halmeter, shuttlexpress (halmeter without
-	# GTK, which cannot link statically; hal_input and gs2_vfd need libudev/libmodbus,
-	# which Debian has only as shared libraries: their tests are host-only)
-	cmake --build "$static" -j"$(nproc)" --target hal_testcomp halmeter shuttlexpress motcmd >>"$static.log" 2>&1 ||
+	# userspace components for tests/usercomp, halmeter, shuttlexpress, hal_input, gs2_vfd
+	# (halmeter without GTK, which cannot link statically; hal_input and gs2_vfd/gs2_sim
+	# need libudev/libmodbus, which Debian has only as shared libraries: they are linked
+	# dynamically and their libraries go into the VM) motmod's motcmd, and the test devices' helper
+	cmake --build "$static" -j"$(nproc)" --target hal_testcomp halmeter shuttlexpress motcmd hal_testdev \
+		hal_input gs2_vfd gs2_sim >>"$static.log" 2>&1 ||
 		{ cat "$static.log" >&2; exit 1; }
 }
 
@@ -92,8 +97,22 @@ done
 for tool in halcmd halrun realtime halsampler halstreamer emc_module_helper; do
 	strip -o "$ird/bin/$tool" "$static/bin/$tool"
 done
-for tool in hal_testcomp halmeter shuttlexpress motcmd; do
+for tool in hal_testcomp halmeter shuttlexpress motcmd hal_testdev hal_input gs2_vfd gs2_sim; do
 	strip -o "$ird/bin/$tool" "$static/bin/$tool"
+done
+# the shared libraries of the dynamic ones, at their paths (with ld.so)
+ldd "$static/bin/hal_input" "$static/bin/gs2_vfd" "$static/bin/gs2_sim" 2>/dev/null |
+	awk '/=> \// { print $3 } /^\t\/.*ld-linux/ { print $1 }' | sort -u |
+	while read -r lib; do
+		mkdir -p "$ird${lib%/*}"
+		[ -e "$ird$lib" ] || cp -L "$lib" "$ird$lib"
+	done
+# the kernel's modules for the virtual input devices of cases/40-devices.sh: evdev,
+# uinput, hid, uhid, hid-generic (Debian builds them as modules)
+mkdir -p "$ird/lib/testdev-modules"
+for m in input/evdev input/misc/uinput hid/hid hid/uhid hid/hid-generic; do
+	cp "/lib/modules/$kver/kernel/drivers/$m.ko" "$ird/lib/testdev-modules/" ||
+		{ echo "no /lib/modules/$kver/kernel/drivers/$m.ko: install linux-image-$kver" >&2; exit 2; }
 done
 # the HAL-level tests: every tests/<component>/<case>/ (not unit/, not kernel/), or
 # only the directories named in KTEST_HAL_DIRS (e.g. "and2 halcmd")
@@ -119,7 +138,10 @@ mkdir -p "$ird/etc"
 	'haluser:x:1000:1000:hal member:/home/haluser:/bin/sh' 'nobody:x:65534:65534:nobody:/:/bin/sh' >"$ird/etc/passwd"
 [ -e "$ird/etc/group" ] || printf '%s\n' 'root:x:0:' 'hal:x:990:haluser' 'haluser:x:1000:' \
 	'nogroup:x:65534:' >"$ird/etc/group"
-cp "$cases"/*.sh "$ird/tests/cases/"
+for c in "$cases"/*.sh; do
+	[ -z "${KTEST_CASES:-}" ] || case " $KTEST_CASES " in *" $(basename "$c" | cut -d- -f1) "*) ;; *) continue ;; esac
+	cp "$c" "$ird/tests/cases/"
+done
 if [ -n "${KTEST_BENCH:-}" ]; then	# the standard workloads, generated here (bash)
 	gen=$root/bench/gen-workload.sh
 	mkdir -p "$ird/bench"
@@ -138,6 +160,7 @@ echo "== booting $kver in qemu (TCG)"
 log=$out/console.log
 timeout "$timeout_s" qemu-system-x86_64 -machine q35 -accel tcg -cpu max -m 768 -smp 2 \
 	-nographic -no-reboot -kernel "/boot/vmlinuz-$kver" -initrd "$out/initramfs.cpio.gz" \
+	-parallel null -serial mon:stdio -serial null \
 	-append "console=ttyS0 edd=off panic=-1 oops=panic rdinit=/init loglevel=4" \
 	</dev/null >"$log" 2>&1 || true
 tr -d '\r' <"$log" >"$log.txt"

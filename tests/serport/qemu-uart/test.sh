@@ -1,10 +1,9 @@
-# Kernel flavor in qemu, as root (run by tests/kernel/qemu-ports.sh, not by
-# the HAL suite: it needs qemu's second 16550 at 0x2f8, left alone by Linux through
-# 8250.nr_uarts=1, and /dev/port). serport claims 0x2f8-0x2fe from the kernel; its
-# write puts DTR in MCR and Break in LCR, read back from the UART; qemu's idle modem
-# status (DCD, DSR, CTS asserted, RI not) reads in RS-232 sense; then, with serport's
-# write taken off the thread, the UART in loopback (MCR bit 4) returns DTR on DSR,
-# RTS on CTS, OUT1 on RI and OUT2 on DCD.
+# Kernel flavor in qemu, as root (cases/40-devices.sh: it needs qemu's second 16550 at
+# 0x2f8, from which that case unbinds Linux's 8250 driver, and /dev/port). serport
+# claims 0x2f8-0x2fe from the kernel; its write puts DTR in MCR and Break in LCR, read
+# back from the UART; qemu's idle modem status (DCD, DSR, CTS asserted, RI not) reads
+# in RS-232 sense; then, with serport's write taken off the thread, the UART in
+# loopback (MCR bit 4) returns DTR on DSR, RTS on CTS, OUT1 on RI and OUT2 on DCD.
 set -e
 inport() { dd if=/dev/port bs=1 skip=$(($1)) count=1 2>/dev/null | od -An -tu1 | tr -d ' '; }
 outport() { printf "\\$(printf %o $(($2)))" | dd of=/dev/port bs=1 seek=$(($1)) count=1 conv=notrunc 2>/dev/null; }
