@@ -68,7 +68,7 @@ if [ -n "${KTEST_BENCH:-}" ]; then
 	cases=$here/bench-cases
 	out=$out-bench
 fi
-timeout_s=${KTEST_TIMEOUT:-1800}
+timeout_s=${KTEST_TIMEOUT:-2700}
 start=$(date +%s)
 
 mkdir -p "$out"
