@@ -13,30 +13,30 @@
 #include "hal.h"
 #include "hm2.h"
 
-int hm2_alias_pin(struct hostmot2 *hm2, const char *prefix, const char *name, const char *alias)
+/* prefix.alias becomes a second name of prefix.name, through hal_pin_alias or
+ * hal_param_alias */
+static int make_alias(struct hostmot2 *hm2, int (*alias_fn)(const char *, const char *),
+		      const char *prefix, const char *name, const char *alias)
 {
 	char n[HAL_NAME_LEN + 1], a[HAL_NAME_LEN + 1];
 	int rc;
 
 	rtapi_snprintf(n, sizeof(n), "%s.%s", prefix, name);
 	rtapi_snprintf(a, sizeof(a), "%s.%s", prefix, alias);
-	rc = hal_pin_alias(n, a);
+	rc = alias_fn(n, a);
 	if (rc)
 		HM2_ERR(hm2, "cannot make %s an alias of %s (%d)", a, n, rc);
 	return rc;
 }
 
+int hm2_alias_pin(struct hostmot2 *hm2, const char *prefix, const char *name, const char *alias)
+{
+	return make_alias(hm2, hal_pin_alias, prefix, name, alias);
+}
+
 int hm2_alias_param(struct hostmot2 *hm2, const char *prefix, const char *name, const char *alias)
 {
-	char n[HAL_NAME_LEN + 1], a[HAL_NAME_LEN + 1];
-	int rc;
-
-	rtapi_snprintf(n, sizeof(n), "%s.%s", prefix, name);
-	rtapi_snprintf(a, sizeof(a), "%s.%s", prefix, alias);
-	rc = hal_param_alias(n, a);
-	if (rc)
-		HM2_ERR(hm2, "cannot make %s an alias of %s (%d)", a, n, rc);
-	return rc;
+	return make_alias(hm2, hal_param_alias, prefix, name, alias);
 }
 
 /* HAL name of a module's output pin code (SecPin with bit 7), or NULL: no alias */
