@@ -8,10 +8,13 @@ using interp_test::expect_error;
 using interp_test::Prog;
 using V = std::vector<std::string>;
 
+// Each test gets its own table file: ctest runs the tests of this file as parallel processes,
+// and one test's remove() must not pull the table from under another.
 static rs274::Config with_tools()
 {
 	rs274::Config c;
-	c.tool_table = ::testing::TempDir() + "interp_offsets.tbl";
+	c.tool_table = ::testing::TempDir() + "interp_offsets." +
+	               ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".tbl";
 	FILE* f = fopen(c.tool_table.c_str(), "w");
 	fputs("T1 P1 Z10 D6\nT2 P2 X1 Z5 D2 ; remark\n", f);
 	fclose(f);
