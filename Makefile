@@ -14,7 +14,7 @@ KERNEL_TEST ?= 1
 SANITIZE_TEST ?= 1
 FUZZ_TEST ?= 1
 
-.PHONY: all deps configure build test test-sim unit-test hal-test kmod kernel-test demo bench install clean \
+.PHONY: all deps configure build test test-sim unit-test hal-test kmod kernel-test demo demo-hal bench install clean \
 	deb package-test fresh-clone-test
 
 all: build
@@ -42,10 +42,13 @@ hal-test: build
 
 # The modules need the C that comp generates from the .comp sources: configure and
 # build just that (target comp_sources), then kbuild. KDIR=... picks another kernel.
+# The self-test modules of tests/kernel are built with them (the same tree as the
+# kernel test's, which then reuses it).
 kmod: configure
 	@scripts/kernel-test-deps --headers
 	cmake --build $(BUILD) -j$(JOBS) --target comp_sources
-	COMP_GEN_DIR=$(abspath $(BUILD))/gen $(MAKE) -f kernel/Makefile.kmod -j$(JOBS)
+	COMP_GEN_DIR=$(abspath $(BUILD))/gen $(MAKE) -f kernel/Makefile.kmod -j$(JOBS) KMOD_WITH_SELFTESTS=1
+	kernel/kmod-deps-check.sh $$($(MAKE) -s -f kernel/Makefile.kmod print-KMOD_BUILD)
 
 kernel-test: build
 	KERNEL_TEST_RT=1 scripts/kernel-test-deps
@@ -76,8 +79,14 @@ package-test: deb
 fresh-clone-test: build
 	tests/fresh-clone/run.sh $(BUILD)
 
+# make demo: the simulated mill homes, runs its sample program, and the sampled
+# joint positions are checked and drawn into $(BUILD)/demo/toolpath.png (demo/run-demo.sh).
+# make demo-hal: the small siggen -> sampler HAL file of demo/demo.hal, printed.
 demo: build
 	demo/run-demo.sh $(BUILD)
+
+demo-hal: build
+	demo/run-hal-demo.sh $(BUILD)
 
 bench: build
 	bench/run-bench.sh $(BUILD)

@@ -96,6 +96,9 @@ if [ "$quick" = 1 ]; then "$build/bin/interp_bench" 100000; else "$build/bin/int
 echo "== motion controller (motmod): cost per servo period with a full look-ahead queue"
 "$here/motion-bench.sh" "$build"
 
+echo "== task: sustained queue throughput into motion (generated program of short G1 moves)"
+"$here/task-bench.sh" "$build"
+
 echo "== hostmot2: hm2 read + write per cycle, simulated 5i25+7i76 layout (simulated flavor)"
 "$here/hostmot2-bench.sh" "$build" 3
 

@@ -7,15 +7,19 @@
 # Only *_fp.o objects are compiled with SSE (the fp column of modules.manifest).
 set -eu
 src=$1 build=$2 manifest=${3:-$1/modules.manifest}
+hdirs=
 awk '!/^[ \t]*(#|$)/ { print }' "$manifest" | while read -r name fp sources; do
 	case $name in *[!a-z0-9_]*|'') echo "modules.manifest: bad module name '$name'" >&2; exit 1;; esac
 	case $fp in fp|nofp) ;; *) echo "modules.manifest: $name: '$fp' is not fp or nofp" >&2; exit 1;; esac
 	objs= csources= nfp=0
 	for s in $sources; do
-		mkdir -p "$build/$(dirname "$s")"
+		# (no dirname/basename processes: thousands of forks made an unchanged
+		# rebuild take minutes on a loaded machine)
+		case $s in */*) d=${s%/*} ;; *) d=. ;; esac
+		[ -d "$build/$d" ] || mkdir -p "$build/$d"
 		case $s in
 		*.comp)	# comp(1) output of the CMake build: build/gen/NAME.c (or $COMP_GEN_DIR)
-			gen=${COMP_GEN_DIR:-$src/build/gen}/$(basename "${s%.comp}").c
+			b=${s%.comp}; gen=${COMP_GEN_DIR:-$src/build/gen}/${b##*/}.c
 			if [ ! -f "$gen" ]; then
 				echo "modules.manifest: $name: $gen not found: run the CMake build first (it runs comp on $s)" >&2
 				exit 1
@@ -26,7 +30,7 @@ awk '!/^[ \t]*(#|$)/ { print }' "$manifest" | while read -r name fp sources; do
 				# comp's two translation units of one generated file (see gen_c.cpp)
 				b=${s%.c}
 				for part in main:GLUE fp:FP; do
-					printf '#define __COMP_PART_%s\n#include "%s"\n' "${part#*:}" "$(basename "$s")" \
+					printf '#define __COMP_PART_%s\n#include "%s"\n' "${part#*:}" "${s##*/}" \
 						>"$build/${b}_${part%%:*}.c.new"
 					cmp -s "$build/${b}_${part%%:*}.c.new" "$build/${b}_${part%%:*}.c" &&
 						rm "$build/${b}_${part%%:*}.c.new" ||
@@ -39,9 +43,12 @@ awk '!/^[ \t]*(#|$)/ { print }' "$manifest" | while read -r name fp sources; do
 		*/*)	# a path with a directory is relative to kernel/; the headers beside it
 			# are linked too, so its #include "x.h" finds them in the build tree
 			ln -sfn "$src/kernel/$s" "$build/$s"
-			for h in "$src/kernel/$(dirname "$s")"/*.h; do
-				[ -e "$h" ] && ln -sfn "$h" "$build/$(dirname "$s")/"
-			done;;
+			# (once per directory, all in one ln)
+			case " $hdirs " in *" $d "*) ;; *)
+				hdirs="$hdirs $d"
+				set -- "$src/kernel/$d"/*.h
+				[ -e "$1" ] && ln -sfn "$@" "$build/$d/";;
+			esac;;
 		*)	ln -sfn "$src/kernel/components/$s" "$build/$s";;
 		esac
 		case $s in *_fp.c) nfp=$((nfp + 1));; esac

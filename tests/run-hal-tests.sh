@@ -83,31 +83,66 @@ if [ ${#dirs[@]} -eq 0 ]; then
 	echo "run-hal-tests: no tests found${filters:+ matching the filters}" >&2
 	exit 1
 fi
+# The slowest tests (tests/slow-first, longest first) start first, so the parallel
+# run does not end waiting for one long test started last.
+slow=()
+while read -r rel _; do
+	case "$rel" in ''|'#'*) continue ;; esac
+	for d in "${dirs[@]}"; do
+		[ "$d" = "$tests_dir/$rel" ] && slow+=("$d") && break
+	done
+done < <(cat "$tests_dir/slow-first" 2>/dev/null)
+if [ ${#slow[@]} -gt 0 ]; then
+	rest=()
+	for d in "${dirs[@]}"; do
+		case " ${slow[*]} " in *" $d "*) ;; *) rest+=("$d") ;; esac
+	done
+	dirs=("${slow[@]}" "${rest[@]}")
+fi
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/hal-tests.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 # Instances must not collide with another runner on the same machine.
 instance_base=$(( ($$ % 2000) * 1000 + 1000000 ))
 
+# skipped OUT REL REASON: the test at REL is not run (status SKIP, one line)
+skipped() {
+	echo SKIP > "$1/status"
+	echo "SKIP $2 ($3)"
+}
+
 # run_one INDEX DIR: writes $work/INDEX/{status,log,result}; prints one line.
 run_one() {
 	local idx=$1 dir=$2 out="$work/$1" rel=${2#"$tests_dir"/} rc ok
 	mkdir -p "$out/tmp"
-	if [ -e "$dir/skip-flavor-$flavor" ] || { [ $sanitize -eq 1 ] && [ -e "$dir/skip-sanitize" ]; }; then
-		echo SKIP > "$out/status"
-		echo "SKIP $rel"
+	local skip=
+	[ -e "$dir/skip-flavor-$flavor" ] && skip="$dir/skip-flavor-$flavor"
+	[ $sanitize -eq 1 ] && [ -e "$dir/skip-sanitize" ] && skip="$dir/skip-sanitize"
+	if [ -n "$skip" ]; then
+		# a skip must say why: an empty marker is a mistake, not a reason
+		if [ ! -s "$skip" ]; then
+			echo FAIL > "$out/status"
+			echo "${skip##*/} is empty: write the reason in it" > "$out/log"
+			echo "FAIL $rel (${skip##*/} has no reason)"
+			return
+		fi
+		skipped "$out" "$rel" "$(head -n 1 "$skip")"
+		return
+	fi
+	# needs-root: the test changes file owners or switches users (its first line: why)
+	if [ -e "$dir/needs-root" ] && [ "$(id -u)" -ne 0 ]; then
+		skipped "$out" "$rel" "needs root: $(head -n 1 "$dir/needs-root")"
 		return
 	fi
 	# needs-devices: device nodes the test must be able to write (e.g. /dev/uinput)
 	local dev
 	for dev in $(cat "$dir/needs-devices" 2>/dev/null); do
 		if [ ! -w "$dev" ]; then
-			echo SKIP > "$out/status"
-			echo "SKIP $rel (needs a writable $dev)"
+			skipped "$out" "$rel" "needs a writable $dev"
 			return
 		fi
 	done
-	local instance=$(( instance_base + idx )) limit=$timeout_s
+	local instance=$(( instance_base + idx )) limit=$timeout_s t0=$SECONDS
 	# a long test (tests/robustness/fault-injection) states its own bound
 	[ -f "$dir/timeout-seconds" ] && limit=$(cat "$dir/timeout-seconds")
 	(
@@ -142,12 +177,13 @@ run_one() {
 		echo "exit status $rc, expected $(cat "$dir/expected-status")" > "$out/log"
 		ok=1
 	fi
+	echo $((SECONDS - t0)) > "$out/seconds"
 	if [ $ok -eq 0 ]; then
 		echo PASS > "$out/status"
-		echo "PASS $rel"
+		echo "PASS $rel ($((SECONDS - t0)) s)"
 	else
 		echo FAIL > "$out/status"
-		echo "FAIL $rel"
+		echo "FAIL $rel ($((SECONDS - t0)) s)"
 	fi
 }
 

@@ -1,10 +1,10 @@
 # emc_module_helper_executable(TARGET MODULE_DIR [FAKE_CALLS_FILE]): the helper with
-# its whitelist (modules.manifest + rtapi + hal_lib) and module directory compiled in.
+# its whitelist (modules.manifest + rtapi + hal_lib + rtapi_parport_linux) and module directory compiled in.
 # Used by this directory's CMakeLists.txt (the installed helper) and by the unit tests
 # (a copy that logs its system calls to FAKE_CALLS_FILE instead of making them).
 function(emc_module_helper_executable target module_dir)
   file(STRINGS ${CMAKE_SOURCE_DIR}/modules.manifest lines REGEX "^[a-z]")
-  set(names "\"rtapi\", \"hal_lib\"")
+  set(names "\"rtapi\", \"hal_lib\", \"rtapi_parport_linux\"")
   foreach(line IN LISTS lines)
     string(REGEX MATCH "^[a-z0-9_]+" name "${line}")
     string(APPEND names ", \"${name}\"")

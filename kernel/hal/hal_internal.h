@@ -50,6 +50,13 @@ int hal_set_lock_locked(unsigned lock_type);
 /* --- the operating system, per flavor (kernel/rtapi/hal_os_uspace.c, hal_lib_kmod.c) --- */
 int hal_os_self(char *name, int len);	/* this process's pid (tgid); its name into name */
 bool hal_os_pid_alive(int pid);
+/* The HAL_SIZE setting as text, "" when unset: the environment variable in userspace,
+ * hal_lib.ko's hal_size parameter in the kernel flavor. */
+const char *hal_os_segment_size_text(void);
+/* The size a new segment gets: HAL_SIZE (bytes, or with a K, M or G suffix; rounded
+ * down to whole pages) or HAL_SEGMENT_SIZE_DEFAULT. -EINVAL, with a message naming the
+ * value, when HAL_SIZE is not a size from HAL_SEGMENT_SIZE_MIN to _MAX. */
+int hal_segment_size_wanted(rtapi_u32 *size);
 /* 0, or -EPERM with a message naming 'what' when 'level' is locked. */
 int hal_check_lock(unsigned level, const char *what);
 

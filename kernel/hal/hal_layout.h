@@ -11,10 +11,18 @@
 #include "hal.h"
 
 #define HAL_KEY 0x48414c32		/* "HAL2": RTAPI shmem key of the segment */
-#define HAL_SEGMENT_SIZE (64u << 20)	/* sparse in userspace; holds ~100k pins */
-#define HAL_LAYOUT_VERSION 6
+/* The segment's size is fixed when it is created: HAL_SIZE (environment in userspace,
+ * hal_lib.ko's hal_size parameter in the kernel; hal_segment_size_wanted()) or the
+ * default, which holds about 59,000 two-input components with their nets. */
+#define HAL_SEGMENT_SIZE_DEFAULT (64u << 20)
+/* Never below the default: every process asks for at least its own HAL_SIZE or the
+ * default when it maps the segment, and a segment smaller than that request would
+ * refuse every tool started without the creator's HAL_SIZE. */
+#define HAL_SEGMENT_SIZE_MIN HAL_SEGMENT_SIZE_DEFAULT
+#define HAL_SEGMENT_SIZE_MAX (1u << 30)
+#define HAL_LAYOUT_VERSION 7
 #define HAL_SEG_MAGIC 0x48414c21
-#define HAL_HASH_BUCKETS 65536u		/* power of two */
+#define HAL_HASH_BUCKETS 262144u	/* power of two; 1 MiB: chains stay short at 256k objects */
 #define HAL_ALIGN 8u
 #define HAL_CACHE_LINE 64u		/* what a realtime thread writes sits alone in lines of this size */
 #ifdef __cplusplus

@@ -58,15 +58,44 @@ void hal_segment_init(struct hal_seg_hdr *seg, rtapi_u32 size)
 	}
 }
 
-/* The first mapper initialises; others wait until it has finished. */
-static int segment_ready(struct hal_seg_hdr *seg)
+int hal_segment_size_wanted(rtapi_u32 *size)
+{
+	const char *text = hal_os_segment_size_text(), *p = text;
+	rtapi_u64 v = 0;
+
+	if (!text || !*text) {
+		*size = HAL_SEGMENT_SIZE_DEFAULT;
+		return 0;
+	}
+	while (*p >= '0' && *p <= '9' && v <= HAL_SEGMENT_SIZE_MAX)
+		v = v * 10 + (rtapi_u64)(*p++ - '0');
+	if (p != text) {
+		switch (*p) {
+		case 'k': case 'K': v <<= 10; p++; break;
+		case 'm': case 'M': v <<= 20; p++; break;
+		case 'g': case 'G': v <<= 30; p++; break;
+		}
+	}
+	if (p == text || *p || v < HAL_SEGMENT_SIZE_MIN || v > HAL_SEGMENT_SIZE_MAX) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "HAL: HAL_SIZE='%s' is not a segment size: bytes, or "
+				"with a K, M or G suffix, from 64M to 1G (default 64M)\n", text);
+		return -EINVAL;
+	}
+	*size = (rtapi_u32)v & ~4095u;
+	return 0;
+}
+
+/* The first mapper initialises, with the size it asked for (a later process that asked
+ * for less attached all the same: then the HAL uses that much); others wait until it
+ * has finished. */
+static int segment_ready(struct hal_seg_hdr *seg, rtapi_u32 size)
 {
 	rtapi_u32 expected = 0;
 	int spins;
 
 	if (__atomic_compare_exchange_n(&seg->init_state, &expected, 1, false,
 					__ATOMIC_ACQ_REL, __ATOMIC_ACQUIRE)) {
-		hal_segment_init(seg, HAL_SEGMENT_SIZE);
+		hal_segment_init(seg, size);
 		__atomic_store_n(&seg->init_state, 2, __ATOMIC_RELEASE);
 		return 0;
 	}
@@ -91,6 +120,7 @@ static int segment_ready(struct hal_seg_hdr *seg)
 int hal_segment_map(void)
 {
 	void *ptr;
+	rtapi_u32 size;
 	int err;
 
 	if (hal_shmem_base)
@@ -113,16 +143,21 @@ int hal_segment_map(void)
 		rtapi_print_msg(RTAPI_MSG_ERR, "HAL: rtapi_init failed (%d)\n", rtapi_module_id);
 		return rtapi_module_id;
 	}
-	shmem_id = rtapi_shmem_new(HAL_KEY, rtapi_module_id, HAL_SEGMENT_SIZE);
+	err = hal_segment_size_wanted(&size);
+	if (err)
+		goto undo_init;
+	shmem_id = rtapi_shmem_new(HAL_KEY, rtapi_module_id, size);
 	if (shmem_id < 0) {
 		err = shmem_id;
-		rtapi_print_msg(RTAPI_MSG_ERR, "HAL: cannot get the HAL shared memory (%d)\n", err);
+		rtapi_print_msg(RTAPI_MSG_ERR, "HAL: cannot get the HAL shared memory (%d)%s\n", err,
+				hal_os_segment_size_text()[0] ? "; HAL_SIZE applies when the session "
+				"starts: a running one keeps its size" : "");
 		goto undo_init;
 	}
 	err = rtapi_shmem_getptr(shmem_id, &ptr);
 	if (err < 0)
 		goto undo_shmem;
-	err = segment_ready(ptr);
+	err = segment_ready(ptr, size);
 	if (err < 0)
 		goto undo_shmem;
 	hal_shmem_base = ptr;

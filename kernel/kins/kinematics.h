@@ -6,9 +6,11 @@
  * A kinematics module exports the six functions below under these names (the names
  * LinuxCNC's modules export, so a kinematics module written for it plugs in too).
  * Exactly one kinematics module is loaded at a time, before motmod: `loadrt trivkins`
- * then `loadrt motmod ...`. motmod refers to the functions by name; the kernel
- * resolves them when motmod is inserted (and refuses a second module exporting them),
- * rtapi_app when it dlopen()s motmod (a second kinematics module refuses to load).
+ * then `loadrt motmod ...`. motmod (and kinstest) look the functions up by name when
+ * they load (kins_bind.h: rtapi_symbol_get), which holds the kinematics module until
+ * they unload; no module links against them, so none depends on a particular
+ * kinematics module (kernel/kmod-deps-check.sh). The kernel refuses a second module
+ * exporting the names, rtapi_app a second kinematics module (kins_claim).
  *
  * Units: joints in machine units or degrees, as the module documents; the world pose
  * X Y Z U V W in machine units, A B C in degrees. Joint arrays passed in are

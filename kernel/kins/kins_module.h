@@ -3,7 +3,9 @@
  * once. A module's NAME.c says, after its state:
  *     KINS_TYPE_IS(KINEMATICS_BOTH)        kinematicsType(), and own_type for kins_claim()
  *     KINS_NOT_SWITCHABLE  or  KINS_SWITCHABLE(&state->sw)
- *     KINS_EXPORTS                         the six names motion resolves
+ *     KINS_EXPORTS                         the six names motion resolves (GPL-only
+ *                                          exports: the kernel's symbol_get, behind
+ *                                          rtapi_symbol_get, finds no others since 6.1.53)
  * and defines kinematicsForward/Inverse/Home in NAME_fp.c. */
 #ifndef KINS_MODULE_H
 #define KINS_MODULE_H
@@ -42,11 +44,11 @@
 	}
 
 #define KINS_EXPORTS                                                               \
-	EXPORT_SYMBOL(kinematicsForward);                                          \
-	EXPORT_SYMBOL(kinematicsInverse);                                          \
-	EXPORT_SYMBOL(kinematicsHome);                                             \
-	EXPORT_SYMBOL(kinematicsType);                                             \
-	EXPORT_SYMBOL(kinematicsSwitchable);                                       \
-	EXPORT_SYMBOL(kinematicsSwitch);
+	EXPORT_SYMBOL_GPL(kinematicsForward);	\
+	EXPORT_SYMBOL_GPL(kinematicsInverse);	\
+	EXPORT_SYMBOL_GPL(kinematicsHome);	\
+	EXPORT_SYMBOL_GPL(kinematicsType);	\
+	EXPORT_SYMBOL_GPL(kinematicsSwitchable);	\
+	EXPORT_SYMBOL_GPL(kinematicsSwitch);
 
 #endif /* KINS_MODULE_H */

@@ -69,10 +69,12 @@ static int export_pins(struct kinstest *k)
 		err = hal_pin_u32_newf(HAL_OUT, &k->cycles, comp_id, "kinstest.cycles");
 	if (err)
 		return err;
-	*k->type = kinematicsType();
-	*k->switchable = kinematicsSwitchable() != 0;
+	*k->type = kinstest_kins.type();
+	*k->switchable = kinstest_kins.switchable() != 0;
 	return hal_export_funct("kinstest.update", kinstest_update, k, 1, 0, comp_id);
 }
+
+struct kins_ops kinstest_kins;
 
 int rtapi_app_main(void)
 {
@@ -84,14 +86,24 @@ int rtapi_app_main(void)
 				KINS_MAX_JOINTS);
 		return -EINVAL;
 	}
+	if (kins_bind(&kinstest_kins)) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "kinstest: no kinematics module is loaded: load one first (e.g. 'loadrt trivkins')\n");
+		return -ENOENT;
+	}
 	k = comp_setup("kinstest", sizeof(*k), &comp_id, &err);
-	if (!k)
+	if (!k) {
+		kins_unbind(&kinstest_kins);
 		return err;
+	}
 	k->joints = joints;
-	return comp_finish(comp_id, export_pins(k));
+	err = comp_finish(comp_id, export_pins(k));
+	if (err)
+		kins_unbind(&kinstest_kins);
+	return err;
 }
 
 void rtapi_app_exit(void)
 {
 	hal_exit(comp_id);
+	kins_unbind(&kinstest_kins);	/* after hal_exit: the update no longer runs */
 }

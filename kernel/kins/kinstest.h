@@ -5,6 +5,7 @@
 
 #include "hal.h"
 #include "kinematics.h"
+#include "kins_bind.h"
 #include "fp_split.h"
 
 /* In HAL memory. Pins named in kinstest.c; written by update() unless IN. */
@@ -22,6 +23,10 @@ struct kinstest {
 	bool have_world;		/* private to update(): the last forward succeeded */
 	EmcPose world;			/* private to update(): its result, the next guess */
 };
+
+/* The loaded kinematics module, found at load (kins_bind.h). Not in HAL memory: HAL
+ * users may write there, and these are the addresses the update calls. */
+COMP_FP_LOCAL extern struct kins_ops kinstest_kins;
 
 COMP_FP_LOCAL void kinstest_update(void *arg, long period_ns);
 

@@ -24,7 +24,7 @@ void kinstest_update(void *arg, long period_ns)
 
 	if (*k->switch_type != k->applied_switch) {
 		k->applied_switch = *k->switch_type;
-		*k->switch_result = kinematicsSwitch(k->applied_switch);
+		*k->switch_result = kinstest_kins.switch_to(k->applied_switch);
 		k->have_world = false;
 	}
 
@@ -35,7 +35,7 @@ void kinstest_update(void *arg, long period_ns)
 		pins_to_pose(k->home, &k->world);
 	fflags = *k->fwd_fflags;
 	iflags = 0;
-	rc = kinematicsForward(j, &k->world, &fflags, &iflags);
+	rc = kinstest_kins.forward(j, &k->world, &fflags, &iflags);
 	*k->fwd_result = rc;
 	*k->fwd_iflags = (rtapi_u32)iflags;
 	k->have_world = rc == 0;
@@ -47,7 +47,7 @@ void kinstest_update(void *arg, long period_ns)
 	pins_to_pose(k->pos_in, &target);
 	iflags = *k->inv_iflags;
 	fflags = 0;
-	rc = kinematicsInverse(&target, j, &iflags, &fflags);
+	rc = kinstest_kins.inverse(&target, j, &iflags, &fflags);
 	*k->inv_result = rc;
 	*k->inv_fflags = (rtapi_u32)fflags;
 	if (rc == 0)

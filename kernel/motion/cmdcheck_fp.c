@@ -136,6 +136,11 @@ int cmdcheck(const struct motion_command *c, const struct cmdcheck_config *cfg, 
 	case MOTCMD_SET_AXIS_ACC_LIMIT:
 		r = axis_ok(c, msg, msglen);
 		return r == MOTION_CMD_OK ? positive(c->value, "the limit", msg, msglen) : r;
+	case MOTCMD_SET_AXIS_EXT_OFFSET_LIMITS:
+		r = axis_ok(c, msg, msglen);
+		if (r == MOTION_CMD_OK)
+			r = not_negative(c->vel, "the velocity", msg, msglen);
+		return r == MOTION_CMD_OK ? not_negative(c->acc, "the acceleration", msg, msglen) : r;
 	case MOTCMD_SET_AXIS_LOCKING_JOINT:
 		r = axis_ok(c, msg, msglen);
 		return r == MOTION_CMD_OK ? joint_ok(c, cfg, -1, msg, msglen) : r;

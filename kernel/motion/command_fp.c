@@ -299,6 +299,8 @@ static void spindle_on(struct motmod *m, int s, const struct motion_command *c)
 	sp->locked = 0;
 	sp->orient_state = 0;
 	*m->pins->spindle[s].orient = 0;
+	if (c->wait_for_at_speed)
+		m->atspeed_next_feed = true;
 }
 
 static void spindle_off(struct motmod *m, int s)
@@ -452,9 +454,11 @@ static int run(struct motmod *m, const struct motion_command *c)
 		m->stepping = true;
 		return MOTION_CMD_OK;
 	case MOTCMD_REVERSE:
+		/* the planner cannot run the path backwards (docs/motion.md, Not done) */
+		mot_error(m, "reverse run is not supported");
+		return MOTION_CMD_INVALID;
 	case MOTCMD_FORWARD:
-		coord_set_direction(m, c->command == MOTCMD_REVERSE);
-		return MOTION_CMD_OK;
+		return MOTION_CMD_OK;	/* the only direction there is */
 	case MOTCMD_FREE:
 		abort_axis_jogs(m);
 		m->free_req = true;
@@ -574,6 +578,7 @@ static int run(struct motmod *m, const struct motion_command *c)
 		m->tool_offset = c->pos;
 		return MOTION_CMD_OK;
 	case MOTCMD_SETUP_ARC_BLENDS:
+		return coord_set_arc_blend(m, c) ? MOTION_CMD_INVALID_PARAMS : MOTION_CMD_OK;
 	case MOTCMD_ENABLE_WATCHDOG:
 	case MOTCMD_DISABLE_WATCHDOG:
 	case MOTCMD_JOINT_ENABLE_AMPLIFIER:
@@ -643,6 +648,10 @@ static int run(struct motmod *m, const struct motion_command *c)
 		return MOTION_CMD_OK;
 	case MOTCMD_SET_AXIS_LOCKING_JOINT:
 		m->axis[c->axis].locking_joint = c->joint;
+		return MOTION_CMD_OK;
+	case MOTCMD_SET_AXIS_EXT_OFFSET_LIMITS:
+		m->axis[c->axis].eoff_vel = c->vel;
+		m->axis[c->axis].eoff_acc = c->acc;
 		return MOTION_CMD_OK;
 	default:
 		return MOTION_CMD_UNKNOWN;

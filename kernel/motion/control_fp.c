@@ -37,7 +37,7 @@ void mot_array_to_pose(const double *v, EmcPose *p)
 int mot_forward(struct motmod *m, const double *joints, EmcPose *world)
 {
 	double v[MOTION_MAX_AXES];
-	int r = kinematicsForward(joints, world, &m->fflags, &m->iflags), l;
+	int r = m->kins.forward(joints, world, &m->fflags, &m->iflags), l;
 
 	if (r < 0)
 		return r;
@@ -51,7 +51,7 @@ int mot_forward(struct motmod *m, const double *joints, EmcPose *world)
 /* joints[] holds the current joints on entry; a non-finite result is a failure */
 int mot_inverse(struct motmod *m, const EmcPose *world, double *joints)
 {
-	int r = kinematicsInverse(world, joints, &m->iflags, &m->fflags), j;
+	int r = m->kins.inverse(world, joints, &m->iflags, &m->fflags), j;
 
 	if (r < 0)
 		return r;
@@ -127,10 +127,10 @@ static void switch_kins(struct motmod *m)
 	double t = *m->pins->switchkins_type, joints[KINS_MAX_JOINTS];
 	EmcPose w = m->world_cmd;
 
-	if (t == m->switchkins_prev || !kinematicsSwitchable())
+	if (t == m->switchkins_prev || !m->kins.switchable())
 		return;
 	m->switchkins_prev = t;
-	if (kinematicsSwitch((int)t) < 0) {
+	if (m->kins.switch_to((int)t) < 0) {
 		mot_error(m, "kinematicsSwitch(%d) failed", (int)t);
 		return;
 	}
@@ -348,26 +348,35 @@ static void set_world_from_joints(struct motmod *m)
 		m->world_cmd = w;
 }
 
-/* world_cmd -> joint commands through the inverse kinematics (TELEOP, COORD);
- * a failure disables motion (motion.md 11.3) */
+/* A world command (TELEOP, COORD) plus the external offsets -> joints[] (holding the
+ * current joints on entry) through the inverse kinematics; a failure disables motion
+ * with motion.md 11.3's message. 0 or negative. */
+int mot_world_to_joints(struct motmod *m, const EmcPose *world, double *joints)
+{
+	EmcPose w = *world;
+	int r;
+
+	mot_eoffset_add(m, &w);
+	r = mot_inverse(m, &w, joints);
+	if (r <= -EINVAL - 1000)
+		mot_error(m, "kinematicsInverse gave non-finite joint location on joint %d",
+			  -(r + EINVAL + 1000));
+	else if (r < 0)
+		mot_error(m, "kinematicsInverse failed");
+	if (r < 0)
+		m->disable_req = true;
+	return r;
+}
+
+/* world_cmd -> joint commands (TELEOP) */
 static void joints_from_world(struct motmod *m)
 {
 	double joints[KINS_MAX_JOINTS];
-	int j, r, nkins = m->num_joints - m->num_extrajoints;
+	int j, nkins = m->num_joints - m->num_extrajoints;
 
 	joints_of(m, joints, false);
-	r = mot_inverse(m, &m->world_cmd, joints);
-	if (r <= -EINVAL - 1000) {
-		mot_error(m, "kinematicsInverse gave non-finite joint location on joint %d",
-			  -(r + EINVAL + 1000));
-		m->disable_req = true;
+	if (mot_world_to_joints(m, &m->world_cmd, joints) < 0)
 		return;
-	}
-	if (r < 0) {
-		mot_error(m, "kinematicsInverse failed");
-		m->disable_req = true;
-		return;
-	}
 	for (j = 0; j < nkins; j++) {
 		struct mot_joint *jt = &m->joint[j];
 
@@ -492,7 +501,14 @@ static void update_inpos(struct motmod *m)
 	default:
 		break;
 	}
+	if (mot_eoffset_moving(m))
+		inpos = false;
 	m->inpos = inpos;
+	/* a probe move without a trip: the probed position is where motion stopped */
+	if (m->probe_pos_pending && (inpos || m->state != MOTION_COORD)) {
+		m->probe_pos_pending = false;
+		mot_pose_to_array(m->world_fb_ok ? &m->world_fb : &m->world_cmd, m->probed.v);
+	}
 	for (j = 0; j < m->num_joints; j++)
 		m->joint[j].inpos = !m->joint[j].free.active;
 }
@@ -503,7 +519,7 @@ static void motion_outputs(struct motmod *m)
 	double v[MOTION_MAX_AXES], vel, req, dtg;
 	rtapi_s32 id, type;
 	int l, i, active_depth;
-	bool full, jog = false;
+	bool full, jog = false, eoffset = false;
 
 	coord_status(m, &id, &type, &vel, &req, &dtg, &active_depth, &full);
 	*p->motion_enabled = m->enabled;
@@ -546,16 +562,19 @@ static void motion_outputs(struct motmod *m)
 		*ap->teleop_tp_enable = ax->tp.enable;
 		*ap->kb_jog_active = ax->kb_jog_active;
 		*ap->wheel_jog_active = ax->wheel_jog_active;
-		*ap->eoffset = 0.0;
-		*ap->eoffset_request = 0.0;
+		*ap->eoffset = ax->eoff.curr_pos;
+		*ap->eoffset_request = ax->eoff_request;
+		if (ax->eoff.curr_pos != 0.0)
+			eoffset = true;
 	}
-	*p->eoffset_active = 0;
-	*p->eoffset_limited = 0;
+	*p->eoffset_active = eoffset;
+	*p->eoffset_limited = m->eoffset_limited;
 	for (i = 0; i < m->num_dout; i++)
 		*p->dout[i] = m->dout_state[i];
 	for (i = 0; i < m->num_aout; i++)
 		*p->aout[i] = m->aout_value[i];
 	p->debug_float[0] = m->net_feed_scale;
+	coord_debug_params(m);
 }
 
 static void update_status(struct motmod *m)
@@ -723,14 +742,14 @@ void mot_controller(void *arg, long period_ns)
 	probe_inputs(m);
 	check_faults(m);
 	set_operating_mode(m);
-	if (!*m->pins->jog_inhibit) {
-		if (m->state == MOTION_FREE)
-			mot_joint_jog_wheels(m);
-		if (m->state == MOTION_TELEOP && !m->on_soft_limit)
-			mot_axis_jog_wheels(m);
-	}
+	/* called every period: counts turned while a wheel may not move (other mode,
+	 * jog-inhibit) are dropped, not kept for later */
+	mot_joint_jog_wheels(m, !*m->pins->jog_inhibit && m->state == MOTION_FREE);
+	mot_axis_jog_wheels(m, !*m->pins->jog_inhibit && m->state == MOTION_TELEOP &&
+				   !m->on_soft_limit);
 	if (m->state == MOTION_FREE)
 		run_homing(m);
+	mot_eoffset_update(m);
 	get_pos_cmds(m);
 	update_inpos(m);
 	mot_compensation(m);

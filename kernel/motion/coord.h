@@ -19,8 +19,9 @@ void coord_clear(struct motmod *m);	/* drop the queue now (disable) */
 void coord_pause(struct motmod *m);
 void coord_resume(struct motmod *m);
 int coord_step(struct motmod *m);	/* -EBUSY while executing */
-void coord_set_direction(struct motmod *m, bool reverse);
 void coord_set_term_cond(struct motmod *m, int cond, double tolerance);
+/* SETUP_ARC_BLENDS (fields: motion_if.h); -EINVAL when the planner refuses a value */
+int coord_set_arc_blend(struct motmod *m, const struct motion_command *c);
 void coord_set_limits(struct motmod *m);	/* traj vel/acc/vel-limit/max feed scale changed */
 void coord_set_spindlesync(struct motmod *m, int spindle, double units_per_rev, bool velocity_mode);
 /* queue a move; 0, -ENOSPC when the queue is full, -EINVAL when the planner refuses it */
@@ -37,6 +38,8 @@ void coord_cycle(struct motmod *m, EmcPose *pos);
 bool coord_is_done(struct motmod *m);	/* queue empty and stopped */
 int coord_depth(struct motmod *m);
 /* executing segment: line id, motion type, velocities, distance to go */
+/* the planner debug parameters traj.* and tc.0..3.* (motion.md 4.1) */
+void coord_debug_params(struct motmod *m);
 void coord_status(struct motmod *m, rtapi_s32 *id, rtapi_s32 *motion_type, double *current_vel,
 		  double *requested_vel, double *distance_to_go, int *active_depth, bool *queue_full);
 

@@ -132,15 +132,19 @@ int coord_step(struct motmod *m)
 	return tp_step(m->coord_tp->tp) == TP_ERR_BUSY ? -EBUSY : 0;
 }
 
-void coord_set_direction(struct motmod *m, bool reverse)
-{
-	(void)m;
-	(void)reverse;	/* reverse run: the planner has no reverse mode; tp-reverse stays FALSE */
-}
-
 void coord_set_term_cond(struct motmod *m, int cond, double tolerance)
 {
 	tp_set_term_cond(m->coord_tp->tp, cond, tolerance);
+}
+
+int coord_set_arc_blend(struct motmod *m, const struct motion_command *c)
+{
+	if (!m->coord_tp)
+		return -EINVAL;
+	if (!(c->value >= 0.0 && c->value <= 1000.0))
+		return -EINVAL;
+	return tp_set_arc_blend(m->coord_tp->tp, c->mode, c->flags, c->count, (int)(c->value + 0.5), c->scale,
+				c->tolerance) ? -EINVAL : 0;
 }
 
 void coord_set_limits(struct motmod *m)
@@ -177,6 +181,13 @@ static void fill_move(struct motmod *m, const struct motion_command *c, struct t
 	mv->tag = 0;
 	mv->enables = (unsigned char)m->enables_new;
 	mv->atspeed = c->wait_for_at_speed;
+	/* the first feed move after a spindle start that waits (motion.md 14.6) */
+	if (m->atspeed_next_feed && (c->motion_type == MOTION_TYPE_FEED ||
+				     c->motion_type == MOTION_TYPE_ARC ||
+				     c->motion_type == MOTION_TYPE_PROBING)) {
+		mv->atspeed = 1;
+		m->atspeed_next_feed = false;
+	}
 	mv->probe_type = c->probe_type;
 }
 
@@ -226,14 +237,12 @@ int coord_add_rigid_tap(struct motmod *m, const struct motion_command *c)
 
 int coord_set_dout(struct motmod *m, int out, bool start, bool end)
 {
-	(void)end;	/* the planner applies outputs at segment starts */
-	return tp_set_dout(m->coord_tp->tp, out, start) ? -EINVAL : 0;
+	return tp_set_dout(m->coord_tp->tp, out, start, end) ? -EINVAL : 0;
 }
 
 int coord_set_aout(struct motmod *m, int out, double start, double end)
 {
-	(void)end;
-	return tp_set_aout(m->coord_tp->tp, out, start) ? -EINVAL : 0;
+	return tp_set_aout(m->coord_tp->tp, out, start, end) ? -EINVAL : 0;
 }
 
 /* what the planner's outputs ask of the rest of motion this period */
@@ -260,7 +269,9 @@ static void apply_outputs(struct motmod *m, const struct tp_outputs *o)
 		mot_pose_to_array(m->world_fb_ok ? &m->world_fb : &m->world_cmd, m->probed.v);
 	} else if (o->probe_no_contact) {
 		m->probing = false;
-		mot_pose_to_array(m->world_fb_ok ? &m->world_fb : &m->world_cmd, m->probed.v);
+		/* the position once motion has stopped (update_inpos): the joints arrive
+		 * a few periods after the planner, through the interpolators */
+		m->probe_pos_pending = true;
 		if (!(m->probe_type & 1)) {
 			mot_error(m, (m->probe_type & 2) ? "G38.4 move finished without breaking contact." :
 				  "G38.2 move finished without making contact.");
@@ -299,22 +310,14 @@ void coord_cycle(struct motmod *m, EmcPose *world)
 {
 	struct mot_coord *c = m->coord_tp;
 	double joints[KINS_MAX_JOINTS];
-	int j, r, nkins = m->num_joints - m->num_extrajoints;
+	int j, nkins = m->num_joints - m->num_extrajoints;
 
 	while (cubic_needs_next_point(&c->cubic[0]) || !c->filled) {
 		run_planner(m, world);
 		for (j = 0; j < KINS_MAX_JOINTS; j++)
 			joints[j] = j < m->num_joints ? m->joint[j].pos_cmd : 0.0;
-		r = mot_inverse(m, world, joints);
-		if (r < 0) {
-			if (r <= -EINVAL - 1000)
-				mot_error(m, "kinematicsInverse gave non-finite joint location on joint %d",
-					  -(r + EINVAL + 1000));
-			else
-				mot_error(m, "kinematicsInverse failed");
-			m->disable_req = true;
+		if (mot_world_to_joints(m, world, joints) < 0)
 			return;
-		}
 		for (j = 0; j < nkins; j++) {
 			cubic_add_point(&c->cubic[j], joints[j]);
 			m->joint[j].coarse_pos = joints[j];
@@ -338,6 +341,25 @@ bool coord_is_done(struct motmod *m)
 int coord_depth(struct motmod *m)
 {
 	return tp_queue_depth(m->coord_tp->tp);
+}
+
+void coord_debug_params(struct motmod *m)
+{
+	struct mot_pins *p = m->pins;
+	double pos, vel, acc;
+	int i;
+
+	/* traj: the executing segment's progress and the path speed */
+	p->traj_pos_out = tp_segment_info(m->coord_tp->tp, 0, &pos, &vel, &acc) ? 0.0 : pos;
+	p->traj_vel_out = m->coord_tp->out.current_vel;
+	p->traj_active_tc = (hal_u32_t)m->coord_tp->out.active_depth;
+	for (i = 0; i < 4; i++) {
+		if (tp_segment_info(m->coord_tp->tp, i, &pos, &vel, &acc))
+			pos = vel = acc = 0.0;
+		p->tc_pos[i] = pos;
+		p->tc_vel[i] = vel;
+		p->tc_acc[i] = acc;
+	}
 }
 
 void coord_status(struct motmod *m, rtapi_s32 *id, rtapi_s32 *motion_type, double *current_vel,

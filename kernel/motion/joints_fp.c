@@ -149,7 +149,7 @@ static bool wheel(struct freetp *tp, rtapi_s32 counts, rtapi_s32 *old, bool *ini
 	return true;
 }
 
-void mot_joint_jog_wheels(struct motmod *m)
+void mot_joint_jog_wheels(struct motmod *m, bool allowed)
 {
 	int j;
 
@@ -158,7 +158,7 @@ void mot_joint_jog_wheels(struct motmod *m)
 		struct mot_joint_pins *jp = &m->pins->joint[j];
 		double lo, hi;
 
-		if (!*jp->jog_enable || !jt->active || !m->enabled || get_homing_is_active() ||
+		if (!allowed || !*jp->jog_enable || !jt->active || !m->enabled || get_homing_is_active() ||
 		    jt->kb_jog_active || (get_home_is_synchronized(j) && !get_homed(j))) {
 			jt->old_jog_counts = *jp->jog_counts;	/* counts while disabled are not kept */
 			continue;
@@ -177,7 +177,7 @@ void mot_joint_jog_wheels(struct motmod *m)
 	}
 }
 
-void mot_axis_jog_wheels(struct motmod *m)
+void mot_axis_jog_wheels(struct motmod *m, bool allowed)
 {
 	int l;
 
@@ -185,7 +185,7 @@ void mot_axis_jog_wheels(struct motmod *m)
 		struct mot_axis *ax = &m->axis[l];
 		struct mot_axis_pins *ap = &m->pins->axis[l];
 
-		if (!*ap->jog_enable || !m->enabled || ax->kb_jog_active) {
+		if (!allowed || !*ap->jog_enable || !m->enabled || ax->kb_jog_active) {
 			ax->old_jog_counts = *ap->jog_counts;
 			continue;
 		}

@@ -107,6 +107,9 @@ enum motion_cmd_type {
 	MOTCMD_SPINDLE_ORIENT,
 	MOTCMD_SET_OFFSET,
 	MOTCMD_SET_MAX_FEED_OVERRIDE,
+	/* [TRAJ]ARC_BLEND_*: mode = enable, flags = fallback enable, count = optimization
+	 * depth, value = gap cycles, scale = ramp frequency (Hz), tolerance = tangent kink
+	 * ratio */
 	MOTCMD_SETUP_ARC_BLENDS,
 	MOTCMD_SET_PROBE_ERR_INHIBIT,
 	MOTCMD_ENABLE_WATCHDOG,
@@ -136,7 +139,11 @@ enum motion_cmd_type {
 	MOTCMD_SET_AXIS_ACC_LIMIT,
 	MOTCMD_SET_AXIS_LOCKING_JOINT,
 	MOTCMD_SET_SPINDLE_PARAMS,
-	MOTCMD_LAST = MOTCMD_SET_SPINDLE_PARAMS
+	/* added after LinuxCNC 2.9's list: the external-offset velocity (vel) and
+	 * acceleration (acc) of axis 'axis', task's OFFSET_AV_RATIO share of the axis
+	 * limits (2.9 sends them with SET_AXIS_VEL/ACC_LIMIT); 0 = no external offset */
+	MOTCMD_SET_AXIS_EXT_OFFSET_LIMITS,
+	MOTCMD_LAST = MOTCMD_SET_AXIS_EXT_OFFSET_LIMITS
 };
 
 /* commandStatus */

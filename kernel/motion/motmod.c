@@ -412,7 +412,7 @@ static int export_motion(int err)
 {
 	struct mot_pins *p = mot.pins;
 	char name[NAME_MAX_LEN];
-	int l;
+	int l, t;
 
 	err = pin(err, HAL_BIT, HAL_IN, &p->enable, "motion.enable", 0);
 	err = pin(err, HAL_BIT, HAL_IN, &p->probe_input, "motion.probe-input", 0);
@@ -471,6 +471,17 @@ static int export_motion(int err)
 	err = param(err, HAL_FLOAT, HAL_RO, &p->debug_float[3], "motion.debug-float-3");
 	err = param(err, HAL_S32, HAL_RO, &p->debug_s32[0], "motion.debug-s32-0");
 	err = param(err, HAL_S32, HAL_RO, &p->debug_s32[1], "motion.debug-s32-1");
+	err = param(err, HAL_FLOAT, HAL_RO, &p->traj_pos_out, "traj.pos_out");
+	err = param(err, HAL_FLOAT, HAL_RO, &p->traj_vel_out, "traj.vel_out");
+	err = param(err, HAL_U32, HAL_RO, &p->traj_active_tc, "traj.active_tc");
+	for (t = 0; t < 4; t++) {
+		rtapi_snprintf(name, sizeof(name), "tc.%d.pos", t);
+		err = param(err, HAL_FLOAT, HAL_RO, &p->tc_pos[t], name);
+		rtapi_snprintf(name, sizeof(name), "tc.%d.vel", t);
+		err = param(err, HAL_FLOAT, HAL_RO, &p->tc_vel[t], name);
+		rtapi_snprintf(name, sizeof(name), "tc.%d.acc", t);
+		err = param(err, HAL_FLOAT, HAL_RO, &p->tc_acc[t], name);
+	}
 	/* seed's motion.servo.overruns (removed in 2.9): periods over 1.5 nominal */
 	err = param(err, HAL_U32, HAL_RO, &p->servo_overruns, "motion.servo.overruns");
 	return err;
@@ -542,6 +553,7 @@ static void remove_all(void)
 		rtapi_exit(mot.rtapi_module_id);
 	mot.comp_id = mot.shmem_id = mot.rtapi_module_id = 0;
 	mot.shm = 0;
+	kins_unbind(&mot.kins);	/* after hal_exit: no thread runs motion any more */
 }
 
 int rtapi_app_main(void)
@@ -552,15 +564,15 @@ int rtapi_app_main(void)
 	err = check_params();
 	if (err)
 		return err;
-	if (!kinematicsType || !kinematicsForward || !kinematicsInverse || !kinematicsSwitch ||
-	    !kinematicsSwitchable) {
+	if (kins_bind(&mot.kins)) {
 		rtapi_print_msg(RTAPI_MSG_ERR, "motmod: no kinematics module is loaded: load one first (e.g. 'loadrt trivkins')\n");
 		return -ENOENT;
 	}
-	mot.kins_type = kinematicsType();
+	mot.kins_type = mot.kins.type();
 	if (mot.num_extrajoints > 0 && mot.kins_type != KINEMATICS_BOTH) {
 		rtapi_print_msg(RTAPI_MSG_ERR, "motmod: num_extrajoints=%d needs kinematics of type BOTH (kinstype=both)\n",
 				mot.num_extrajoints);
+		kins_unbind(&mot.kins);
 		return -EINVAL;
 	}
 	mot.comp_id = hal_init("motmod");

@@ -20,16 +20,8 @@
 #include "freetp.h"
 #include "comp.h"
 #include "../kins/kinematics.h"
+#include "../kins/kins_bind.h"
 #include "homing/homing.h"
-
-/* Weak: motmod checks at load that a kinematics module is there (a clear message
- * instead of an unresolved symbol), so the references must not fail the load. */
-#pragma weak kinematicsForward
-#pragma weak kinematicsInverse
-#pragma weak kinematicsHome
-#pragma weak kinematicsType
-#pragma weak kinematicsSwitchable
-#pragma weak kinematicsSwitch
 
 struct mot_joint_pins {
 	hal_float_t *motor_pos_cmd, *motor_pos_fb, *pos_cmd, *pos_fb, *coarse_pos_cmd;
@@ -80,6 +72,10 @@ struct mot_pins {
 	hal_bit_t debug_bit[2];
 	hal_float_t debug_float[4];
 	hal_s32_t debug_s32[2];
+	/* planner debug parameters (motion.md 4.1): executing segment, first 4 queued */
+	hal_float_t traj_pos_out, traj_vel_out;
+	hal_u32_t traj_active_tc;
+	hal_float_t tc_pos[4], tc_vel[4], tc_acc[4];
 	hal_u32_t servo_overruns;
 	struct mot_joint_pins joint[MOTION_MAX_JOINTS];
 	struct mot_axis_pins axis[MOTION_MAX_AXES];
@@ -110,6 +106,11 @@ struct mot_axis {
 	rtapi_s32 locking_joint;
 	double min_limit, max_limit, vel_limit, acc_limit;
 	struct freetp tp;
+	/* external offset (eoffset_fp.c): eoff.curr_pos is the applied offset */
+	struct freetp eoff;
+	rtapi_s32 eoff_old_counts;
+	double eoff_request;		/* counts x scale since TELEOP/COORD began */
+	double eoff_vel, eoff_acc;	/* SET_AXIS_EXT_OFFSET_LIMITS; 0: none */
 };
 
 struct mot_spindle {
@@ -136,6 +137,7 @@ struct motmod {
 	struct mot_pins *pins;
 	long servo_period_ns;
 	double servo_period_s;
+	struct kins_ops kins;		/* the loaded kinematics module (kins_bind.h) */
 	KINEMATICS_TYPE kins_type;
 
 	/* command handler */
@@ -166,6 +168,9 @@ struct motmod {
 
 	/* probing (motion.md 13) */
 	bool probing, probe_tripped, probe_prev;
+	bool eoffset_limited;		/* an external offset was clipped this period */
+	bool probe_pos_pending;		/* a probe move ended without a trip: record once stopped */
+	bool atspeed_next_feed;		/* SPINDLE_ON asked the next feed move to wait */
 	int probe_type;
 	bool no_probe_jog_error, no_probe_home_error;
 	struct motion_pose probed;
@@ -201,9 +206,14 @@ void mot_controller(void *arg, long period_ns);
 /* joints_fp.c */
 void mot_process_joint_inputs(struct motmod *m);
 void mot_check_joint_faults(struct motmod *m);
-void mot_joint_jog_wheels(struct motmod *m);
-void mot_axis_jog_wheels(struct motmod *m);
+void mot_joint_jog_wheels(struct motmod *m, bool allowed);	/* allowed: FREE, no jog-inhibit */
+void mot_axis_jog_wheels(struct motmod *m, bool allowed);	/* allowed: TELEOP, no jog-inhibit */
 void mot_free_planners(struct motmod *m);
+
+/* eoffset_fp.c: external offsets (after the operating mode, before the setpoints) */
+void mot_eoffset_update(struct motmod *m);
+void mot_eoffset_add(const struct motmod *m, EmcPose *world);	/* world += offsets */
+bool mot_eoffset_moving(const struct motmod *m);
 void mot_compensation(struct motmod *m);
 void mot_joint_outputs(struct motmod *m);
 bool mot_joint_jog_limits(struct motmod *m, int j, double *lo, double *hi);
@@ -217,6 +227,7 @@ bool mot_all_homed(struct motmod *m);
 void mot_set_free_from_cmd(struct motmod *m);
 int mot_forward(struct motmod *m, const double *joints, EmcPose *world);
 int mot_inverse(struct motmod *m, const EmcPose *world, double *joints);
+int mot_world_to_joints(struct motmod *m, const EmcPose *world, double *joints);
 void mot_pose_to_array(const EmcPose *p, double *v);
 void mot_array_to_pose(const double *v, EmcPose *p);
 

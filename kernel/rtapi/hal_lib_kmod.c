@@ -24,6 +24,17 @@ MODULE_DESCRIPTION("HAL: the hardware abstraction layer's realtime library");
 
 /* --- the operating system for the HAL core (hal_internal.h) --- */
 
+/* HAL_SIZE for the kernel flavor: halcmd passes the environment's value when it loads
+ * hal_lib.ko (user/kmod); read once, at init, when the segment is made. */
+static char *hal_size = "";
+module_param(hal_size, charp, 0444);
+MODULE_PARM_DESC(hal_size, "HAL segment size: bytes, or with a K, M or G suffix, 64M to 1G (default 64M)");
+
+const char *hal_os_segment_size_text(void)
+{
+	return hal_size ? hal_size : "";
+}
+
 int hal_os_self(char *name, int len)
 {
 	strscpy(name, current->comm, len);
@@ -230,10 +241,14 @@ static const struct rtapi_dev_hook hal_dev_hook = {
 
 static int __init hal_lib_kmod_init(void)
 {
+	rtapi_u32 size;
 	int rc;
 
+	rc = hal_segment_size_wanted(&size);
+	if (rc)
+		return rc;
 	/* Before the segment exists: users may never map its records writable. */
-	rc = rtapi_shmem_kmod_protect_key(HAL_KEY, HAL_VAL_START(HAL_SEGMENT_SIZE));
+	rc = rtapi_shmem_kmod_protect_key(HAL_KEY, HAL_VAL_START(size));
 	if (rc)
 		return rc;
 	rc = hal_segment_map();

@@ -6,9 +6,17 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 #include "hal_internal.h"
+
+const char *hal_os_segment_size_text(void)
+{
+	const char *s = getenv("HAL_SIZE");
+
+	return s ? s : "";
+}
 
 int hal_os_self(char *name, int len)
 {
@@ -29,7 +37,7 @@ int hal_os_self(char *name, int len)
 			comm[strcspn(comm, "\n")] = 0;
 	}
 	snprintf(name, (size_t)len, "%s", comm);
-	return (int)getpid();
+	return (int)rtapi_getpid();	/* cached: this runs at every HAL lock */
 }
 
 /* A zombie (exited, not yet reaped) still answers kill(pid, 0); its parent may never

@@ -59,8 +59,7 @@ void rtapi_mp_register(const struct rtapi_mp_desc *desc);
 #define MODULE_SUPPORTED_DEVICE(x)
 #define MODULE_PARM_DESC(v, d)
 #define EXPORT_FUNCTION(fn)	/* rtapi_app dlopen()s with RTLD_GLOBAL */
-#define EXPORT_SYMBOL(sym)
-#define EXPORT_SYMBOL_GPL(sym)
+#include "rtapi_export.h"
 
 #endif /* __KERNEL__ */
 

@@ -68,9 +68,33 @@ int rtapi_exit(int module_id)
 	return 0;
 }
 
+/* getpid() is a system call (glibc stopped caching it) and the HAL lock asks for the
+ * caller's pid at every acquisition: a third of loading a large .hal file went there.
+ * The pid is cached, and forgotten in the child of a fork (posix_spawn's child execs
+ * without calling back into this library). */
+static int cached_pid;
+static pthread_once_t pid_once = PTHREAD_ONCE_INIT;
+
+static void forget_pid(void)
+{
+	__atomic_store_n(&cached_pid, 0, __ATOMIC_RELAXED);
+}
+
+static void watch_forks(void)
+{
+	pthread_atfork(0, 0, forget_pid);
+}
+
 long rtapi_getpid(void)
 {
-	return (long)getpid();
+	int pid = __atomic_load_n(&cached_pid, __ATOMIC_RELAXED);
+
+	if (!pid) {
+		pthread_once(&pid_once, watch_forks);
+		pid = (int)getpid();
+		__atomic_store_n(&cached_pid, pid, __ATOMIC_RELAXED);
+	}
+	return pid;
 }
 
 bool rtapi_process_exists(long pid)

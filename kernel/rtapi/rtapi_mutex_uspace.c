@@ -63,7 +63,7 @@ unsigned long rtapi_mutex_self_word(void)
 {
 	static int cached_pid;
 	static unsigned long cached_word;
-	int pid = (int)getpid();
+	int pid = (int)rtapi_getpid();
 	unsigned long long start = 0;
 	char state;
 

@@ -1,115 +1,101 @@
 /* SPDX-License-Identifier: GPL-2.0-or-later */
 /* rtapi_parport_kmod.c - the kernel flavor's access to Linux parallel ports for
- * hal_parport_get (hal_parport.h). The parport core is a module that is often not
- * loaded (and rtapi.ko must load without it), so its functions are taken with
- * symbol_get when a port is requested: without it Linux owns no parallel port, and
- * addresses are claimed as raw regions; a parport *number* then needs it loaded. */
+ * hal_parport_get (hal_parport.h). The parport calls themselves are in
+ * rtapi_parport_linux.ko, which registers them here while it is loaded
+ * (rtapi_parport_linux.h says why they cannot be in rtapi.ko). Without it Linux
+ * drives no parallel port HAL can use: addresses are claimed as raw regions, and a
+ * parport *number* is refused. */
 #include <linux/module.h>
-#include <linux/parport.h>
+#include <linux/mutex.h>
 #include <linux/slab.h>
 #include "rtapi_kmod.h"
 #include "hal_parport.h"
+#include "rtapi_parport_linux.h"
 
-struct linux_pp {
-	struct parport *(*find_number)(int);
-	struct parport *(*find_base)(unsigned long);
-	void (*put_port)(struct parport *);
-	struct pardevice *(*register_dev)(struct parport *, const char *,
-					  const struct pardev_cb *, int);
-	void (*unregister_dev)(struct pardevice *);
-	int (*claim)(struct pardevice *);
-	void (*release)(struct pardevice *);
-	struct pardevice *dev;
+static DEFINE_MUTEX(ops_lock);
+static const struct rtapi_parport_linux_ops *linux_ops;
+
+struct linux_claim {
+	const struct rtapi_parport_linux_ops *ops;
+	void *handle;
 };
 
-static void put_symbols(struct linux_pp *pp)
+int rtapi_parport_linux_register(const struct rtapi_parport_linux_ops *ops)
 {
-	if (pp->find_number) symbol_put(parport_find_number);
-	if (pp->find_base) symbol_put(parport_find_base);
-	if (pp->put_port) symbol_put(parport_put_port);
-	if (pp->register_dev) symbol_put(parport_register_dev_model);
-	if (pp->unregister_dev) symbol_put(parport_unregister_device);
-	if (pp->claim) symbol_put(parport_claim);
-	if (pp->release) symbol_put(parport_release);
-}
+	int rc = 0;
 
-/* 1 when every parport function was found (module references held). */
-static int get_symbols(struct linux_pp *pp)
+	mutex_lock(&ops_lock);
+	if (linux_ops)
+		rc = -EBUSY;
+	else
+		linux_ops = ops;
+	mutex_unlock(&ops_lock);
+	return rc;
+}
+EXPORT_SYMBOL(rtapi_parport_linux_register);
+
+void rtapi_parport_linux_unregister(const struct rtapi_parport_linux_ops *ops)
 {
-	pp->find_number = symbol_get(parport_find_number);
-	pp->find_base = symbol_get(parport_find_base);
-	pp->put_port = symbol_get(parport_put_port);
-	pp->register_dev = symbol_get(parport_register_dev_model);
-	pp->unregister_dev = symbol_get(parport_unregister_device);
-	pp->claim = symbol_get(parport_claim);
-	pp->release = symbol_get(parport_release);
-	if (pp->find_number && pp->find_base && pp->put_port && pp->register_dev &&
-	    pp->unregister_dev && pp->claim && pp->release)
-		return 1;
-	put_symbols(pp);
-	return 0;
+	mutex_lock(&ops_lock);
+	if (linux_ops == ops)
+		linux_ops = NULL;
+	mutex_unlock(&ops_lock);
+}
+EXPORT_SYMBOL(rtapi_parport_linux_unregister);
+
+/* The registered operations with a reference on their module, or NULL. */
+static const struct rtapi_parport_linux_ops *get_ops(void)
+{
+	const struct rtapi_parport_linux_ops *ops;
+
+	mutex_lock(&ops_lock);
+	ops = linux_ops;
+	if (ops && !try_module_get(ops->owner))
+		ops = NULL;
+	mutex_unlock(&ops_lock);
+	return ops;
 }
 
 int rtapi_parport_linux_claim(unsigned int which, int is_number, unsigned int modes,
 			      const char *owner, unsigned short *base,
 			      unsigned short *base_hi, void **handle)
 {
-	struct pardev_cb cb = { .flags = PARPORT_FLAG_EXCL };
-	struct linux_pp *pp = kzalloc(sizeof(*pp), GFP_KERNEL);
-	struct parport *port;
+	const struct rtapi_parport_linux_ops *ops = get_ops();
+	struct linux_claim *claim;
 	int rc;
 
-	if (!pp)
-		return -ENOMEM;
-	if (!get_symbols(pp)) {
-		kfree(pp);
+	if (!ops) {
 		if (!is_number)
-			return 0;	/* no parport core: Linux owns no parallel port */
+			return 0;	/* no parport layer: Linux owns no parallel port */
 		rtapi_print_msg(RTAPI_MSG_ERR, "hal_parport: parport %u: Linux parport support is "
 				"not loaded (modprobe parport_pc), or give the port's address\n",
 				which);
 		return -ENODEV;
 	}
-	port = is_number ? pp->find_number(which) : pp->find_base(which);
-	if (!port) {
-		put_symbols(pp);
-		kfree(pp);
-		if (!is_number)
-			return 0;
-		rtapi_print_msg(RTAPI_MSG_ERR, "hal_parport: Linux has no parport %u\n", which);
-		return -ENODEV;
+	claim = kzalloc(sizeof(*claim), GFP_KERNEL);
+	if (!claim) {
+		module_put(ops->owner);
+		return -ENOMEM;
 	}
-	if ((port->modes & modes) != modes)
-		rtapi_print_msg(RTAPI_MSG_WARN, "hal_parport: parport at 0x%lx lacks some requested "
-				"modes (0x%x of 0x%x); continuing\n", port->base,
-				port->modes & modes, modes);
-	pp->dev = pp->register_dev(port, owner, &cb, 0);
-	rc = pp->dev ? pp->claim(pp->dev) : -EBUSY;
-	if (rc) {
-		rtapi_print_msg(RTAPI_MSG_ERR, "hal_parport: parport at 0x%lx is busy (used by "
-				"another driver)\n", port->base);
-		if (pp->dev)
-			pp->unregister_dev(pp->dev);
-		pp->put_port(port);
-		put_symbols(pp);
-		kfree(pp);
-		return -EBUSY;
+	rc = ops->claim(which, is_number, modes, owner, base, base_hi, &claim->handle);
+	if (rc <= 0) {
+		kfree(claim);
+		module_put(ops->owner);
+		return rc;
 	}
-	*base = port->base;
-	*base_hi = port->base_hi;
-	pp->put_port(port);	/* the registered device holds its own reference */
-	*handle = pp;
+	claim->ops = ops;
+	*handle = claim;
 	return 1;
 }
 
 void rtapi_parport_linux_release(void *handle)
 {
-	struct linux_pp *pp = handle;
+	struct linux_claim *claim = handle;
+	const struct rtapi_parport_linux_ops *ops = claim->ops;
 
-	pp->release(pp->dev);
-	pp->unregister_dev(pp->dev);
-	put_symbols(pp);
-	kfree(pp);
+	ops->release(claim->handle);
+	kfree(claim);
+	module_put(ops->owner);
 }
 
 EXPORT_SYMBOL(hal_parport_get);

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: GPL-2.0-or-later */
 /* rtapi_udp.h - connected UDP sockets for realtime drivers of network I/O boards
- * (hm2_eth), simulated flavor only: the kernel flavor has no realtime-safe UDP and
- * its drivers refuse to load (hm2_eth documents why). open/close are init code;
+ * (hm2_eth). Simulated flavor: POSIX sockets (rtapi_udp_uspace.c). The kernel flavor
+ * has no realtime-safe UDP: rtapi_udp_open refuses with -EOPNOTSUPP after a message
+ * giving the reason (rtapi_udp_kmod.c), and its drivers fail to load. open/close are init code;
  * send/recv never block longer than asked and may run in a realtime thread. */
 #ifndef RTAPI_UDP_H
 #define RTAPI_UDP_H
@@ -14,7 +15,7 @@ extern "C" {
 
 /* A socket connected to ip (dotted quad) : port. The handle (>= 0), or -errno:
  * -EINVAL for an address that is not a dotted quad (no message), another -errno
- * after a message naming the address. */
+ * after a message naming the address (-EOPNOTSUPP: the kernel flavor's refusal). */
 int rtapi_udp_open(const char *ip, int port);
 void rtapi_udp_close(int handle);
 /* Sends one datagram: 0, or -errno (-EAGAIN when the socket buffer is full). */

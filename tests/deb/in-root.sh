@@ -26,6 +26,7 @@ check "hal group exists" getent group hal
 check "emc_module_helper is 4750 root:hal" sh -c '[ "$(stat -c %a:%U:%G /usr/bin/emc_module_helper)" = 4750:root:hal ]'
 check "realtime limits for group hal" grep -q "^@hal.*rtprio" /etc/security/limits.d/hal.conf
 check "udev rule for /dev/rtapi" grep -q 'KERNEL=="rtapi".*GROUP="hal", MODE="0660"' /lib/udev/rules.d/60-hal.rules
+check "udev rule for the Mesa 5i24/5i25/6i25" grep -q 'ATTR{vendor}=="0x2718".*chgrp hal /sys%p/resource0' /lib/udev/rules.d/60-hal.rules
 check "udev rules for hal_input and shuttlexpress" sh -c 'grep -q "ID_INPUT_JOYSTICK.*GROUP=\"plugdev\"" /usr/lib/udev/rules.d/60-hal-input.rules &&
 	grep -q "idVendor}==\"0b33\".*MODE=\"0444\"" /usr/lib/udev/rules.d/60-hal-shuttlexpress.rules'
 check "a man page for every program" sh -c '
@@ -35,8 +36,25 @@ check "a man page for every program" sh -c '
 check "API and component pages" sh -c 'ls /usr/share/man/man3/hal_pin_new.3hal* /usr/share/man/man3/rtapi_shmem_new.3rtapi* /usr/share/man/man9/and2.9* >/dev/null'
 check "bash completion for halcmd and halrun" test -e /usr/share/bash-completion/completions/halcmd -a -e /usr/share/bash-completion/completions/halrun
 
-# halrun of a small file, as a member of the hal group, in the simulated flavor
+# The group's rtprio limit reaches a member's session (pam_limits through runuser).
+# pam_limits needs CAP_SYS_RESOURCE to raise a hard limit; a machine whose root lacks
+# it (some sandboxes) cannot give the limit, and rtapi_app then says it runs without
+# SCHED_FIFO: that one line is taken out of the outputs below, and said here.
 useradd -m -G hal tester 2>/dev/null
+rtprio=$(runuser -u tester -- sh -c 'ulimit -r')
+caps=$(sed -n 's/^CapEff:[[:space:]]*//p' /proc/self/status)
+if [ "$rtprio" = 99 ]; then
+	ok "rtprio 99 for a member of group hal"
+	no_rt_note() { cat; }
+elif [ $(( 0x${caps:-0} >> 24 & 1 )) -eq 0 ]; then
+	echo "skip rtprio for a member of group hal: this machine's root lacks CAP_SYS_RESOURCE (CapEff $caps), so pam_limits cannot raise it"
+	no_rt_note() { grep -v '^rtapi: SCHED_FIFO not permitted'; }
+else
+	bad "rtprio for a member of group hal is '$rtprio', not 99 (limits.d/hal.conf, pam_limits)"
+	no_rt_note() { cat; }
+fi
+
+# halrun of a small file, as a member of the hal group, in the simulated flavor
 cat >/tmp/small.hal <<'HAL'
 loadrt threads name1=t period1=1000000
 loadrt and2
@@ -52,7 +70,7 @@ loadusr -w halsampler -n 3
 show pin and2.0.out
 HAL
 chmod 644 /tmp/small.hal
-runuser -u tester -- env HAL_FLAVOR=sim halrun /tmp/small.hal >/tmp/halrun.out 2>&1
+runuser -u tester -- env HAL_FLAVOR=sim halrun /tmp/small.hal 2>&1 | no_rt_note >/tmp/halrun.out
 cat >/tmp/halrun.expected <<'OUT'
 1 1 
 1 1 
@@ -124,13 +142,18 @@ getp twice.out
 getp gain3.0.out
 HAL
 chown -R tester /tmp/ext
-check "both load and run" sh -c 'runuser -u tester -- env HAL_FLAVOR=sim halrun /tmp/ext/ext.hal >/tmp/ext.out 2>&1; printf "3\n6\n" | diff -u - /tmp/ext.out'
+runuser -u tester -- env HAL_FLAVOR=sim halrun /tmp/ext/ext.hal 2>&1 | no_rt_note >/tmp/ext.out
+check "both load and run" sh -c 'printf "3\n6\n" | diff -u - /tmp/ext.out'
 
 # DKMS: the postinst builds and installs the modules for both kernels
 if install_debs /tmp/debs/hal-dkms_*.deb; then ok "apt-get install hal-dkms"
 else bad "apt-get install hal-dkms"; tail -n 30 /tmp/install.log; fi
-nmods=$(( $(awk '!/^[ \t]*(#|$)/' /usr/src/hal-$version/modules.manifest | wc -l) + 2 ))
-installed_for() {	# every module of the manifest, built for kernel $1
+# the modules dkms.conf names (debian/dkms-conf.sh: the core's rtapi, hal_lib and
+# rtapi_parport_linux, then every module of modules.manifest)
+nmods=$(grep -c '^BUILT_MODULE_NAME\[' /usr/src/hal-$version/dkms.conf)
+manifest_mods=$(awk '!/^[ \t]*(#|$)/' /usr/src/hal-$version/modules.manifest | wc -l)
+check "dkms.conf names the core's 3 modules and the manifest's $manifest_mods" test "$nmods" -eq $((manifest_mods + 3))
+installed_for() {	# every module of dkms.conf, built for kernel $1
 	dkms status -m hal -v "$version" -k "$1" | grep -q ': installed' || { dkms status; return 1; }
 	n=$(ls /lib/modules/$1/updates/dkms/*.ko* | wc -l)
 	[ "$n" = "$nmods" ] || { echo "$n modules in /lib/modules/$1/updates/dkms, expected $nmods"; return 1; }

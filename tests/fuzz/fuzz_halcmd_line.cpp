@@ -19,7 +19,7 @@ using namespace hal::halcmd;
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
-    static const IniFile ini = IniFile::parse("[EMC]\nMACHINE = fuzz\n[AXIS_0]\nSCALE=1.5\n", "f.ini");
+    static const IniFile ini = *IniFile::parse("[EMC]\nMACHINE = fuzz\n[AXIS_0]\nSCALE=1.5\n", "f.ini");
     Substitutions subs;
     subs.env = [](const std::string& name) -> std::optional<std::string> {
         if (name == "HOME")

@@ -5,6 +5,7 @@
 # .hal files for halcmd, .ini files, .comp sources, streamer inputs, and the small
 # hand-written seeds in tests/fuzz/seeds/. New corpus entries and crash reproducers
 # go to BUILD/corpus/ and BUILD/crashes/. Exit status 1 if any target found a crash.
+# FUZZ_JOBS: targets run at a time (default: the number of cores).
 set -u
 build=${1:?usage: run-fuzz.sh BUILD SECONDS}
 seconds=${2:?usage: run-fuzz.sh BUILD SECONDS}
@@ -48,21 +49,43 @@ for v in 0 1 TRUE false -7 0x7fffffff 4294967295 2.5 -1e-3 0x1p4 1e308 nan; do
 	printf '%s' "$v" > "$corpus/fuzz_values/v-$v"
 done
 
+# fuzz TARGET: one target for SECONDS; its verdict into BUILD/TARGET.status
+fuzz() {
+	t=$1 log=$build/$1.log
+	if "$build/$t" -max_total_time="$seconds" -max_len=65536 -timeout=10 -rss_limit_mb=2048 \
+		-artifact_prefix="$build/crashes/$t-" -print_final_stats=1 \
+		"$corpus/$t" > "$log" 2>&1; then
+		echo ok > "$build/$t.status"
+	else
+		echo failed > "$build/$t.status"
+	fi
+}
+
+# FUZZ_JOBS targets at a time (default: the number of cores; each target is one
+# process, so each still gets a core for its SECONDS)
+jobs=${FUZZ_JOBS:-$(nproc 2>/dev/null || echo 1)}
+targets="fuzz_halcmd_line fuzz_ini fuzz_values fuzz_module_args fuzz_protocol fuzz_stream_line fuzz_comp fuzz_rs274"
 status=0
-for t in fuzz_halcmd_line fuzz_ini fuzz_values fuzz_module_args fuzz_protocol fuzz_stream_line fuzz_comp fuzz_rs274; do
+running=0
+for t in $targets; do
+	rm -f "$build/$t.status"
 	if [ ! -x "$build/$t" ]; then
 		echo "run-fuzz: $build/$t not built" >&2
 		status=1
 		continue
 	fi
-	log=$build/$t.log
-	if "$build/$t" -max_total_time="$seconds" -max_len=65536 -timeout=10 -rss_limit_mb=2048 \
-		-artifact_prefix="$build/crashes/$t-" -print_final_stats=1 \
-		"$corpus/$t" > "$log" 2>&1; then
-		echo "run-fuzz: $t: $(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$') runs in ${seconds} s, no crash"
+	fuzz "$t" &
+	running=$((running + 1))
+	if [ $running -ge "$jobs" ]; then wait; running=0; fi
+done
+wait
+for t in $targets; do
+	[ -x "$build/$t" ] || continue
+	if [ "$(cat "$build/$t.status" 2>/dev/null)" = ok ]; then
+		echo "run-fuzz: $t: $(grep -o 'stat::number_of_executed_units: *[0-9]*' "$build/$t.log" | grep -o '[0-9]*$') runs in ${seconds} s, no crash"
 	else
 		echo "run-fuzz: $t FAILED (reproducer in $build/crashes/):" >&2
-		tail -40 "$log" >&2
+		tail -40 "$build/$t.log" >&2
 		status=1
 	fi
 done

@@ -131,6 +131,28 @@ long number(std::istringstream& words, const std::string& cmd)
     return v;
 }
 
+// The loop both virtual devices run: command lines from stdin (command returns false
+// for "quit"), and the device's own events (LEDs, open/close) drained as they come.
+// fd is -1 while the test has the device destroyed.
+template <typename Drain, typename Command>
+void serve_device(int& fd, Drain drain, Command command)
+{
+    LineReader input;
+    std::istringstream words;
+    for (bool running = true; running;) {
+        pollfd p[2] = {{STDIN_FILENO, POLLIN, 0}, {fd, POLLIN, 0}};
+        if (poll(p, fd >= 0 ? 2 : 1, -1) < 0)
+            continue;
+        if (fd >= 0 && (p[1].revents & POLLIN))
+            drain(fd);
+        if (!(p[0].revents & (POLLIN | POLLHUP)))
+            continue;
+        running = input.fill();
+        while (running && input.next(words))
+            running = command(fd, words);
+    }
+}
+
 // ---- uinput ------------------------------------------------------------------------
 
 int uinput_create(const std::string& name)
@@ -233,20 +255,8 @@ bool uinput_command(int& fd, const std::string& name, std::istringstream& words)
 int run_uinput(const std::string& name)
 {
     int fd = uinput_create(name);
-    LineReader input;
-    std::istringstream words;
-    for (bool running = true; running;) {
-        pollfd p[2] = {{STDIN_FILENO, POLLIN, 0}, {fd, POLLIN, 0}};
-        if (poll(p, fd >= 0 ? 2 : 1, -1) < 0)
-            continue;
-        if (fd >= 0 && (p[1].revents & POLLIN))
-            uinput_drain(fd);
-        if (!(p[0].revents & (POLLIN | POLLHUP)))
-            continue;
-        running = input.fill();
-        while (running && input.next(words))
-            running = uinput_command(fd, name, words);
-    }
+    serve_device(fd, uinput_drain,
+                 [&](int& f, std::istringstream& words) { return uinput_command(f, name, words); });
     if (fd >= 0) {
         ioctl(fd, UI_DEV_DESTROY);
         close(fd);
@@ -407,20 +417,7 @@ bool uhid_command(int& fd, std::istringstream& words)
 int run_uhid()
 {
     int fd = uhid_create();
-    LineReader input;
-    std::istringstream words;
-    for (bool running = true; running;) {
-        pollfd p[2] = {{STDIN_FILENO, POLLIN, 0}, {fd, POLLIN, 0}};
-        if (poll(p, fd >= 0 ? 2 : 1, -1) < 0)
-            continue;
-        if (fd >= 0 && (p[1].revents & POLLIN))
-            uhid_drain(fd);
-        if (!(p[0].revents & (POLLIN | POLLHUP)))
-            continue;
-        running = input.fill();
-        while (running && input.next(words))
-            running = uhid_command(fd, words);
-    }
+    serve_device(fd, uhid_drain, uhid_command);
     if (fd >= 0)
         close(fd);            // closing /dev/uhid destroys the device
     return 0;

@@ -24,6 +24,8 @@ mkdir -p /home/haluser
 done) &
 chown 0:990 /bin/emc_module_helper && chmod 4750 /bin/emc_module_helper
 chmod 1777 /tmp
+# the loopback interface (down at boot): emcrsh's tests talk TCP on 127.0.0.1
+ip link set lo up 2>/dev/null || ifconfig lo 127.0.0.1 up
 # The kernel's firmware search path gets a directory every test may write: drivers
 # that upload FPGA images (pluto_servo, pluto_step) read test-made dummies from there
 # (tests/helpers/pluto-firmware.sh).

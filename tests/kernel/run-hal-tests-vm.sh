@@ -2,8 +2,9 @@
 # run-hal-tests-vm.sh TESTS_DIR - the HAL-level tests inside the kernel-test VM, in
 # the kernel flavor: tests/run-hal-tests.sh's rules (test.hal or test.sh, expected or
 # checkresult, expected-status, skip-flavor-kernel, needs-devices) in POSIX sh for busybox, one test
-# at a time (the kernel has one HAL). Prints "HALTEST PASS|FAIL|SKIP <dir>" per test,
-# "| " + the diff or reason under a failure, and a summary line; exit 1 on a failure.
+# at a time (the kernel has one HAL). Prints "HALTEST PASS|FAIL|SKIP <dir>" per test
+# (PASS and FAIL with its seconds), "| " + the diff or reason under a failure, and a
+# summary line; exit 1 on a failure.
 tests=${1:?usage: run-hal-tests-vm.sh TESTS_DIR}
 timeout_s=${HAL_TEST_TIMEOUT:-120}
 export HAL_FLAVOR=kernel HAL_TEST_FLAVOR=kernel
@@ -30,13 +31,16 @@ for t in $(find "$tests" \( -name test.hal -o -name test.sh \) -type f | sort); 
 		echo "HALTEST SKIP $rel (no python3 in the VM: built with KTEST_PYTHON=0)"; skip=$((skip + 1)); continue
 	fi
 	rm -rf "$work/tmp"; mkdir -p "$work/tmp"
+	t0=$(cut -d' ' -f1 /proc/uptime)
+	limit=$timeout_s	# a test's own timeout-seconds, as tests/run-hal-tests.sh takes it
+	[ -f "$dir/timeout-seconds" ] && limit=$(cat "$dir/timeout-seconds")
 	(
 		cd "$dir" || exit 99
 		export TEST_TMPDIR="$work/tmp"
 		if [ -f test.hal ]; then
-			exec timeout "$timeout_s" halrun -f test.hal
+			exec timeout "$limit" halrun -f test.hal
 		else
-			exec timeout "$timeout_s" sh test.sh
+			exec timeout "$limit" sh test.sh
 		fi
 	) </dev/null >"$work/result" 2>&1
 	rc=$?
@@ -46,7 +50,7 @@ for t in $(find "$tests" \( -name test.hal -o -name test.sh \) -type f | sort); 
 	# whatever the test left behind (failed teardown, timeout) must not leak
 	timeout 30 halrun -U >/dev/null 2>&1 </dev/null
 	if [ $rc -eq 124 ] || [ $rc -eq 143 ]; then
-		echo "timed out after ${timeout_s} s" >"$work/log"; ok=1
+		echo "timed out after ${limit} s" >"$work/log"; ok=1
 	elif [ -x "$dir/checkresult" ]; then
 		(cd "$dir" && ./checkresult "$work/result") >"$work/log" 2>&1; ok=$?
 	elif [ -f "$dir/expected" ]; then
@@ -66,10 +70,12 @@ for t in $(find "$tests" \( -name test.hal -o -name test.sh \) -type f | sort); 
 		done
 		emc_module_helper remove hal_lib 2>/dev/null; emc_module_helper remove rtapi 2>/dev/null
 	fi
+	# (seconds with one decimal: which tests the VM's time goes to)
+	took=$(awk -v a="$t0" -v b="$(cut -d' ' -f1 /proc/uptime)" 'BEGIN { printf "%.1f", b - a }')
 	if [ $ok -eq 0 ]; then
-		echo "HALTEST PASS $rel"; pass=$((pass + 1))
+		echo "HALTEST PASS $rel ($took s)"; pass=$((pass + 1))
 	else
-		echo "HALTEST FAIL $rel"; fail=$((fail + 1))
+		echo "HALTEST FAIL $rel ($took s)"; fail=$((fail + 1))
 		sed 's/^/| /' "$work/log" | head -n 40
 		echo "| --- output:"
 		sed 's/^/| /' "$work/result" | head -n 40

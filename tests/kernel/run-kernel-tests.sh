@@ -8,11 +8,19 @@
 # HAL-level suite in the kernel flavor) and reports from the serial console.
 # Usage: run-kernel-tests.sh [KERNEL_RELEASE...]   (default: newest installed non-rt
 #        -amd64; e.g. 6.1.0-56-rt-amd64 for the PREEMPT_RT kernel). Several kernels
-#        are tested in parallel VMs (7.5 min for both Debian kernels on 2 cores, 11 min
-#        one after the other), each one's report printed when all are done.
+#        are built one after the other, then tested in parallel VMs, each one's report
+#        printed when all are done.
 # Python 3 and the hal module go into the VM (tests/python run there); KTEST_PYTHON=0 leaves them out.
 # While iterating: KTEST_HAL_DIRS="hal_input serport" packs only those HAL test dirs,
 # KTEST_CASES="10 40" runs only the cases whose names start so (e.g. 10-hal-suite).
+# KTEST_STEP=build builds everything up to the initramfs and stops; KTEST_STEP=boot
+# boots the initramfs built last (so the build runs before taking the qemu lock:
+#   KTEST_STEP=build run-kernel-tests.sh K && flock LOCK env KTEST_STEP=boot run-kernel-tests.sh K).
+# The modules are built where `make kmod` builds them for that kernel
+# (build/kmod/<release>/, kbuild incremental: a rerun with no source change
+# rebuilds nothing, and `make kmod` before or after shares the work); with
+# KTEST_MANIFEST or KMOD_CFLAGS they go to build/kmod-test/<kver>/modules instead.
+# Each step prints its time ("== ... (N s)").
 # Needs: scripts/kernel-test-deps. Exit 0 when every case passed.
 set -eu
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -38,22 +46,37 @@ build_static() {
 	# userspace components for tests/usercomp, halmeter, shuttlexpress, hal_input, gs2_vfd
 	# (halmeter without GTK, which cannot link statically; hal_input and gs2_vfd/gs2_sim
 	# need libudev/libmodbus, which Debian has only as shared libraries: they are linked
-	# dynamically and their libraries go into the VM) motmod's motcmd, and the test devices' helper
-	cmake --build "$static" -j"$(nproc)" --target hal_testcomp halmeter shuttlexpress motcmd hal_testdev \
-		hal_input gs2_vfd gs2_sim >>"$static.log" 2>&1 ||
+	# dynamically and their libraries go into the VM) motmod's motcmd and the motion-tp path
+	# check, the test devices' helper, task, io, the bus client, halui and the launcher,
+	# the interpreter tool and the path check of tests/demo
+	cmake --build "$static" -j"$(nproc)" --target hal_testcomp halmeter shuttlexpress motcmd motion_pathcheck \
+		hal_testdev hal_input gs2_vfd gs2_sim milltask iocontrol_io emcbus halui emc launch_probe rs274_tool \
+		toolpath_check emcrsh rsh_client >>"$static.log" 2>&1 ||
 		{ cat "$static.log" >&2; exit 1; }
 }
 
 if [ $# -gt 1 ]; then
-	build_static	# once, before the kernels' runs share it
-	mkdir -p "$root/build/kmod-test"
-	pids=
-	for k in "$@"; do
-		KTEST_STATIC_READY=1 "$0" "$k" >"$root/build/kmod-test/$k.report" 2>&1 &
-		pids="$pids $!"
-	done
+	# The builds one after the other (each one uses every core), then the VMs in parallel.
 	rc=0
-	for p in $pids; do wait "$p" || rc=1; done
+	mkdir -p "$root/build/kmod-test"
+	if [ "${KTEST_STEP:-all}" != boot ]; then
+		s0=$(date +%s)
+		build_static	# once, before the kernels' runs share it
+		echo "== static tools built ($(($(date +%s) - s0)) s)"
+		for k in "$@"; do
+			KTEST_STATIC_READY=1 KTEST_STEP=build "$0" "$k" >"$root/build/kmod-test/$k.report" 2>&1 || rc=1
+		done
+	else
+		for k in "$@"; do : >"$root/build/kmod-test/$k.report"; done
+	fi
+	if [ $rc = 0 ] && [ "${KTEST_STEP:-all}" != build ]; then
+		pids=
+		for k in "$@"; do
+			KTEST_STEP=boot "$0" "$k" >>"$root/build/kmod-test/$k.report" 2>&1 &
+			pids="$pids $!"
+		done
+		for p in $pids; do wait "$p" || rc=1; done
+	fi
 	for k in "$@"; do echo "==== $k"; cat "$root/build/kmod-test/$k.report"; done
 	exit $rc
 fi
@@ -71,17 +94,37 @@ fi
 timeout_s=${KTEST_TIMEOUT:-2700}
 start=$(date +%s)
 
+step=${KTEST_STEP:-all}
+case $step in all|build|boot) ;; *) echo "KTEST_STEP must be all, build or boot, not '$step'" >&2; exit 2 ;; esac
+t0=$start
+# took WHAT: the time since the last step
+took() { t1=$(date +%s); echo "== $1 ($((t1 - t0)) s)"; t0=$t1; }
+
 mkdir -p "$out"
-echo "== building modules for $kver"
-# KTEST_MANIFEST: build and test only the modules listed there (default: all)
-make -s -f "$root/kernel/Makefile.kmod" KDIR="$kdir" KMOD_BUILD="$out/modules" \
-	KMOD_TEST_MODULES="$here/fmt_selftest.c $here/rtapi_conformance.c" ${KTEST_MANIFEST:+KMOD_MANIFEST="$KTEST_MANIFEST"} ${KMOD_CFLAGS:+KCFLAGS="$KMOD_CFLAGS"} >"$out.build.log" 2>&1 ||
-	{ mkdir -p "$out"; cat "$out.build.log" >&2; exit 1; }
+if [ "$step" != boot ]; then
+# The modules: make kmod's directory for this kernel (the self-test modules are part of
+# make kmod's build too, so neither build undoes the other), unless a subset
+# (KTEST_MANIFEST: only the modules listed there) or other flags are asked for.
+kmod="make -s -f $root/kernel/Makefile.kmod KDIR=$kdir"
+if [ -n "${KTEST_MANIFEST:-}${KMOD_CFLAGS:-}" ]; then
+	mods=$out/modules
+else
+	mods=$($kmod print-KMOD_BUILD)
+fi
+echo "== building modules for $kver in $mods"
+# (-j: with several kernels, their builds run one after the other)
+$kmod -j"${JOBS:-$(nproc)}" KMOD_BUILD="$mods" KMOD_WITH_SELFTESTS=1 \
+	${KTEST_MANIFEST:+KMOD_MANIFEST="$KTEST_MANIFEST"} ${KMOD_CFLAGS:+KCFLAGS="$KMOD_CFLAGS"} >"$out.build.log" 2>&1 ||
+	{ cat "$out.build.log" >&2; exit 1; }
+took "modules built"
 # the FP rule on the machine code: no FP/SIMD register outside *_fp objects
 echo "== checking floating point in the modules (kernel/kmod-fp-check.sh)"
-"$root/kernel/kmod-fp-check.sh" "$out/modules" || exit 1
+"$root/kernel/kmod-fp-check.sh" "$mods" || exit 1
+# no recorded dependency on a kinematics module (modprobe motmod would load one)
+"$root/kernel/kmod-deps-check.sh" "$mods" || exit 1
+took "modules checked"
 
-[ -n "${KTEST_STATIC_READY:-}" ] || build_static
+if [ -z "${KTEST_STATIC_READY:-}" ]; then build_static; took "static tools built"; fi
 
 echo "== building the initramfs"
 rm -rf "$out/initramfs"
@@ -91,15 +134,23 @@ mkdir -p "$ird/bin" "$ird$vm_moddir/$kver" "$ird/tests/cases" "$ird/tests/hal" \
 cp /bin/busybox "$ird/bin/busybox"
 file -L /bin/busybox | grep -q 'statically linked' ||
 	{ echo "/bin/busybox is not static: install busybox-static" >&2; exit 2; }
-for ko in $(find "$out/modules" -name '*.ko'); do
+for ko in $(find "$mods" -name '*.ko'); do
 	strip --strip-debug -o "$ird$vm_moddir/$kver/${ko##*/}" "$ko"
 done
 for tool in halcmd halrun realtime halsampler halstreamer emc_module_helper; do
 	strip -o "$ird/bin/$tool" "$static/bin/$tool"
 done
-for tool in hal_testcomp halmeter shuttlexpress motcmd hal_testdev hal_input gs2_vfd gs2_sim; do
+for tool in hal_testcomp halmeter shuttlexpress motcmd motion_pathcheck hal_testdev hal_input gs2_vfd gs2_sim \
+	milltask io emcbus halui emc launch_probe rs274 toolpath_check emcrsh rsh_client; do
 	strip -o "$ird/bin/$tool" "$static/bin/$tool"
 done
+ln -sf io "$ird/bin/iocontrol"	# task, io, the bus client and halui for tests/task, tests/halui
+ln -sf emcrsh "$ird/bin/linuxcncrsh"	# emcrsh's other name (tests/emcrsh)
+# the launcher's HAL library and the simulated machines (tests/launcher, tests/configs)
+mkdir -p "$ird/share/hal"
+cp -r "$root/lib/hallib" "$ird/share/hal/"
+cp -r "$root/configs" "$ird/tests/configs"	# where tests/configs/*/ find it (../../../configs)
+cp -r "$root/demo" "$ird/tests/demo"	# the demo's machine run, for tests/demo (../../../demo)
 # the shared libraries of the dynamic ones, at their paths (with ld.so)
 ldd "$static/bin/hal_input" "$static/bin/gs2_vfd" "$static/bin/gs2_sim" 2>/dev/null |
 	awk '/=> \// { print $3 } /^\t\/.*ld-linux/ { print $1 }' | sort -u |
@@ -107,10 +158,11 @@ ldd "$static/bin/hal_input" "$static/bin/gs2_vfd" "$static/bin/gs2_sim" 2>/dev/n
 		mkdir -p "$ird${lib%/*}"
 		[ -e "$ird$lib" ] || cp -L "$lib" "$ird$lib"
 	done
-# the kernel's modules for the virtual input devices of cases/40-devices.sh: evdev,
-# uinput, hid, uhid, hid-generic (Debian builds them as modules)
+# the kernel's modules for the device tests of cases/40-devices.sh: evdev, uinput,
+# hid, uhid, hid-generic for the virtual input devices, parport and parport_pc for
+# hal_parport on a port Linux drives (Debian builds them as modules)
 mkdir -p "$ird/lib/testdev-modules"
-for m in input/evdev input/misc/uinput hid/hid hid/uhid hid/hid-generic; do
+for m in input/evdev input/misc/uinput hid/hid hid/uhid hid/hid-generic parport/parport parport/parport_pc; do
 	cp "/lib/modules/$kver/kernel/drivers/$m.ko" "$ird/lib/testdev-modules/" ||
 		{ echo "no /lib/modules/$kver/kernel/drivers/$m.ko: install linux-image-$kver" >&2; exit 2; }
 done
@@ -155,6 +207,10 @@ chmod +x "$ird/init"
 # root's files, writable by root only, whoever builds: the helper uses only such modules
 chmod -R go-w "$ird"
 (cd "$ird" && find . | cpio -o -H newc -R 0:0 --quiet | gzip -1) >"$out/initramfs.cpio.gz"
+took "initramfs built"
+[ "$step" = build ] && exit 0
+fi	# (not KTEST_STEP=boot)
+[ -f "$out/initramfs.cpio.gz" ] || { echo "no $out/initramfs.cpio.gz: run with KTEST_STEP=build first" >&2; exit 2; }
 
 echo "== booting $kver in qemu (TCG)"
 log=$out/console.log

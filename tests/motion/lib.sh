@@ -6,7 +6,11 @@
 #   motor-pos-fb, an ideal drive); not started.
 # motion_config JOINTS [VEL ACC]: joint and axis limits -100..100, velocity (10),
 #   acceleration (100), following error 1 / 0.5 through motcmd.
-# capture_start FILE / capture_stop: halsampler of sampler 0 in the background.
+# motion_coord: enable motion and switch to COORD (trivkins: no homing needed).
+# capture_start FILE / capture_stop: halsampler of sampler 0 in the background; the
+#   sampler records only between the two (motion_sample leaves it disabled, and
+#   capture_stop waits until halsampler has taken every sample), so captures in one
+#   test each hold their own periods.
 # motion_analyze DT < samples: max |velocity|, max |acceleration| and the final
 #   position from positions sampled every period (column 1, scaled by 1e6 so the six
 #   printed decimals keep 1e-12 units).
@@ -35,6 +39,7 @@ motion_sample() {
 	halcmd net sampled joint.$1.${2:-pos-cmd} scale.0.in || exit 1
 	halcmd setp scale.0.gain 1000000 || exit 1
 	halcmd net scaled scale.0.out sampler.0.pin.0 || exit 1
+	halcmd setp sampler.0.enable 0 || exit 1	# capture_start enables it
 	halcmd addf scale.0 servo-thread || exit 1
 	halcmd addf sampler.0 servo-thread || exit 1
 }
@@ -63,13 +68,29 @@ CMDS
 	motcmd -f "$T/config.cmd" || exit 1
 }
 
+motion_coord() {
+	motcmd enable || exit 1
+	motcmd coord || exit 1
+	motcmd wait-state coord 5 || exit 1
+}
+
 capture_start() {
 	halsampler >"$1" &
 	capture_pid=$!
+	halcmd setp sampler.0.enable 1 || exit 1
 }
 
+# Stop recording, let halsampler empty the FIFO (curr-depth 0, at most 5 s), then end
+# it: nothing is left over for the next capture.
 capture_stop() {
 	sleep 0.1	# a few more periods at rest
+	halcmd setp sampler.0.enable 0 || exit 1
+	i=0
+	while [ "$(halcmd getp sampler.0.curr-depth)" != 0 ]; do
+		i=$((i + 1))
+		[ $i -le 100 ] || { echo "capture_stop: halsampler did not empty sampler 0" >&2; exit 1; }
+		sleep 0.05
+	done
 	kill "$capture_pid"
 	wait "$capture_pid" 2>/dev/null
 }

@@ -21,6 +21,7 @@
 #include "realtime.hpp"
 #include "session.hpp"
 #include "snapshot.hpp"
+#include "spawn/spawn.hpp"
 
 namespace hal::halcmd {
 
@@ -103,44 +104,13 @@ Result<LoadusrFlags> parse_loadusr_flags(Args args)
     return f;
 }
 
-// fork/exec through PATH. A close-on-exec pipe tells the parent whether exec worked,
-// so "no such program" is our one error line, not a message from the child.
+// fork/exec through PATH (spawn.hpp): "no such program" is our one error line
 Result<int> spawn(const std::vector<std::string>& argv)
 {
-    int fds[2];
-    if (pipe2(fds, O_CLOEXEC) < 0)
-        return Error{-errno, std::string("loadusr: pipe: ") + std::strerror(errno)};
-    std::fflush(nullptr);
-    pid_t pid = fork();
-    if (pid < 0) {
-        int e = errno;
-        close(fds[0]);
-        close(fds[1]);
-        return Error{-e, std::string("loadusr: fork: ") + std::strerror(e)};
-    }
-    if (pid == 0) {
-        std::vector<char*> cargv;
-        for (const std::string& a : argv)
-            cargv.push_back(const_cast<char*>(a.c_str()));
-        cargv.push_back(nullptr);
-        close(fds[0]);
-        execvp(cargv[0], cargv.data());
-        int e = errno;
-        (void)!write(fds[1], &e, sizeof(e));
-        _exit(127);
-    }
-    close(fds[1]);
-    int child_errno = 0;
-    ssize_t n;
-    do {
-        n = read(fds[0], &child_errno, sizeof(child_errno));
-    } while (n < 0 && errno == EINTR);
-    close(fds[0]);
-    if (n == sizeof(child_errno)) {
-        waitpid(pid, nullptr, 0);
-        return Error{-child_errno, "loadusr: cannot run '" + argv[0] + "': " + std::strerror(child_errno)};
-    }
-    return static_cast<int>(pid);
+    auto pid = spawn_process(argv);
+    if (!pid)
+        return Error{pid.error().code, "loadusr: " + pid.error().message};
+    return static_cast<int>(*pid);
 }
 
 std::string describe_status(int status)

@@ -92,7 +92,7 @@ Result<std::optional<Expansion>> expand_ini(std::string_view line, size_t at, co
         name = std::string(line.substr(close + 1, end - close - 1));
         e.next = end;
     }
-    std::optional<std::string> v = subs.ini->get(section, name);
+    std::optional<std::string> v = subs.ini->find(section, name);
     if (!v)
         return Error{-2, "inifile variable [" + section + "]" + name + " not found in '" + subs.ini->path() + "'"};
     e.value = *v;

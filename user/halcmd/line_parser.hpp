@@ -12,9 +12,11 @@
 #include <vector>
 
 #include "hal/result.hpp"
-#include "ini_file.hpp"
+#include "ini/ini_file.hpp"
 
 namespace hal::halcmd {
+
+using hal::ini::IniFile;   // user/ini: the reader every tool shares
 
 struct Substitutions {
     // Environment lookup; nullopt = not set. Empty function = no variable is set.

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "hal/result.hpp"
-#include "ini_file.hpp"
+#include "ini/ini_file.hpp"
 #include "line_parser.hpp"
 #include "options.hpp"
 #include "rtapi.h"

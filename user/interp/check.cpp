@@ -38,7 +38,7 @@ void Interp::Impl::check_block(Block& b)
 	if (b.motion == 800)
 		b.motion = -1;
 	int mo = b.motion;
-	if (mo != -1 && !axes && !one_of(mo, {0, 10, 20, 30}))
+	if (mo != -1 && !axes && !one_of(mo, {0, 10, 20, 30, 52}))
 		fail("All axes missing with motion code");
 	if ((g0 == 520 || g0 == 920) && !axes)
 		fail("All axes missing with g52 or g92");
@@ -51,20 +51,20 @@ void Interp::Impl::check_block(Block& b)
 		fail("D word with no G41, G41.1, G42, G42.1, G71, G71.1, G71.2 or G96 to use it");
 	if (b.w('h') && !one_of(g8, {430, 432}) && mo != 760)
 		fail("H word with no G43 or G76 to use it");
-	if (b.w('i') && !one_of(mo, {20, 30, 331, 760, 870}) && g0 != 100)
+	if (b.w('i') && !one_of(mo, {20, 30, 50, 51, 331, 760, 870}) && g0 != 100)
 		fail("I word with no G2, G3, G5, G5.1, G10, G33.1, G76, or G87 to use it");
-	if (b.w('j') && !one_of(mo, {20, 30, 760, 870}) && g0 != 100)
+	if (b.w('j') && !one_of(mo, {20, 30, 50, 51, 760, 870}) && g0 != 100)
 		fail("J word with no G2, G3, G5, G5.1, G10, G76 or G87 to use it");
 	if (b.w('k') && !one_of(mo, {20, 30, 330, 331, 760, 870}))
 		fail("K word with no G2, G3, G33, G33.1, G76, or G87 to use it");
 	if (b.w('l') && g0 != 100 && !one_of(b.gmode[7], {411, 421}) && !is_cycle(mo) && m5 != 66 &&
-	    mo != 760)
+	    mo != 760 && mo != 52 && b.mmode[4] != 98)
 		fail("L word with no G10, cutter compensation, canned cycle, digital/analog input, M98 or NURBS code");
-	if (b.w('p') && !one_of(g0, {40, 100}) && !one_of(mo, {20, 30, 740, 760, 820, 840, 860, 880, 890}) &&
+	if (b.w('p') && !one_of(g0, {40, 100}) && !one_of(mo, {20, 30, 50, 52, 740, 760, 820, 840, 860, 880, 890}) &&
 	    b.gmode[13] != 640 && !one_of(m9, {50, 51, 52, 53}) && !one_of(m5, {62, 63, 64, 65, 66}) &&
-	    !user_m && m7 != 19)
+	    !user_m && m7 != 19 && b.mmode[4] != 98)
 		fail("P word with no G2 G3 G4 G10 G64 G5 G5.2 G76 G82 G86 G88 G89 or M50 M51 M52 M53 M62 M63 M64 M65 M66 M98 or user M code to use it");
-	if (b.w('q') && g0 != 100 && b.gmode[13] != 640 && !one_of(mo, {730, 760, 830}) && m7 != 19 &&
+	if (b.w('q') && g0 != 100 && b.gmode[13] != 640 && !one_of(mo, {50, 730, 760, 830}) && m7 != 19 &&
 	    !one_of(m5, {66, 67, 68}) && !user_m && b.mmode[6] != 61)
 		fail("Q word with no G5, G10, G64, G73, G76, G83, M19, M66, M67, M68 or user M code that uses it");
 	if (b.w('r') && !one_of(mo, {20, 30, 760}) && !is_cycle(mo) && g0 != 100 && m7 != 19)

@@ -1,15 +1,23 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // comp.cpp - cutter radius compensation G40/G41/G42/G41.1/G42.1 (gcode.md 11.3) in
-// the XY and XZ planes, with one move of look-ahead: each programmed move waits
-// until the next one is known, then ends at its offset end point (straight-on
-// corner), at the intersection of the two offset paths (inside corner), or at its
-// offset end followed by an arc of the tool radius around the corner (outside corner).
-//   entry (first move after G41/G42): a straight line from the uncompensated point to
-//       the offset start of the following move; must be longer than the radius.
-//   exit (first move after G40): the pending move ends at its offset end point, then
-//       a straight line to the programmed (uncompensated) end.
-//   a move with no motion in the plane ends the pending move at its own offset end
-//       point; the next move in the plane then joins from there (arc outside, line inside).
+// the XY and XZ planes, with one move of look-ahead. Each move in the plane is held
+// back (HoldCanon queues everything after it) until the next move in the plane is
+// known; then the corner between the two is resolved:
+//   outside corner: the held move ends at its nominal offset end (programmed end +
+//       radius along its normal), then an arc of the tool radius around the programmed
+//       corner point takes the tool to the next move's offset start;
+//   inside corner: the held move ends where the two offset paths intersect (line/line,
+//       line/arc, arc/line, arc/arc), the next move starts there;
+//   straight-on (tangent) corner: the held move ends at its offset end.
+// Moves with no motion in the plane (Z plunges in G17) are queued behind the held move
+// and run at its final end point, so a plunge does not change how a corner is cut.
+// Entry (first move in the plane after G41/G42): a line runs from the uncompensated
+// point to the point where the tool touches the programmed end point with the tool
+// beside its own path (the tangent from the start to the circle of the tool radius
+// around the end); an arc ends at its programmed end moved by the radius along the
+// normal, with the programmed centre (canon makes the spiral). Exit (first move in
+// the plane after G40): the held move ends at its offset end, then a straight line
+// runs to the programmed end point.
 #include <cmath>
 
 #include "impl.hpp"
@@ -33,16 +41,21 @@ V unit(V a)
 	return l > 0 ? V{a.x / l, a.y / l} : V{0, 0};
 }
 V rot90(V a) { return {-a.y, a.x}; }
+V rotate(V a, double ang) { return {a.x * std::cos(ang) - a.y * std::sin(ang), a.x * std::sin(ang) + a.y * std::cos(ang)}; }
+V v2(const double* p) { return {p[0], p[1]}; }
+void put2(double* p, V v) { p[0] = v.x; p[1] = v.y; }
 
 constexpr double EPS = 1e-9;
+// A corner turning less than this towards the tool's side counts as straight-on
+// (LinuxCNC's TOLERANCE_CONCAVE_CORNER, radians).
+constexpr double CONCAVE_SMALL = 0.05;
 
-// Tangent of a move at its start (at_end false) or end. start/end: plane points.
-V tangent(bool is_arc, V start, V end, V center, int rotation, bool at_end)
+// Tangent of a move at a point on it.
+V tangent(bool is_arc, V start, V end, V center, int rotation, V at)
 {
 	if (!is_arc)
 		return unit(end - start);
-	V q = at_end ? end : start;
-	V t = rot90(unit(q - center));
+	V t = rot90(unit(at - center));
 	return rotation > 0 ? t : -1 * t;
 }
 
@@ -88,14 +101,20 @@ void Interp::Impl::comp_start_cmd(const Block& b, int code)
 	if (code == 411 || code == 421) {
 		if (!b.w('d'))
 			fail("D word missing with G41.1 or G42.1");
+		if (b.v('d') < 0)
+			fail("Negative D word tool radius index used with G41.1 or G42.1");
 		radius = b.v('d') / 2;
 		comp_orientation = b.w('l') ? (int)b.v('l') : 0;
 		if (comp_orientation > 9)
 			fail("Invalid tool orientation L%d with G41.1/G42.1 (0-9)", comp_orientation);
+		if (b.w('l') && plane != Plane::XZ)
+			fail("Tool orientation (L word) with G41.1/G42.1 is for the XZ plane (G18) only");
 	} else {
 		int n = current_tool;
 		if (b.w('d')) {
 			double d = b.v('d');
+			if (d < 0)
+				fail("Negative D word tool radius index used with G41 or G42");
 			if (!(std::fabs(d - std::nearbyint(d)) <= 0.0001 && d < 1e9))
 				fail("Non integer value for integer");
 			n = (int)std::nearbyint(d);
@@ -105,9 +124,11 @@ void Interp::Impl::comp_start_cmd(const Block& b, int code)
 			fail("Tool %d not found in the tool table", n);
 		radius = t ? t->diameter / 2 / unit_factor(AX_X) : 0;
 	}
+	if (comp_exit_next)       // G40 then G41/G42 before any move: finish the old path
+		comp_flush();
+	comp_exit_next = false;
 	comp = code;
 	comp_radius = std::fabs(radius);
-	comp_exit_next = false;
 }
 
 void Interp::Impl::comp_stop_cmd()
@@ -115,7 +136,8 @@ void Interp::Impl::comp_stop_cmd()
 	if (comp == 400)
 		return;
 	comp = 400;
-	comp_exit_next = comp_pending || comp_corner;
+	comp_exit_next = comp_pending;
+	comp_exit_radius = comp_radius;
 }
 
 void Interp::Impl::comp_line_to(const Pos& prog, bool feed_move)
@@ -126,173 +148,189 @@ void Interp::Impl::comp_line_to(const Pos& prog, bool feed_move)
 		traverse(prog);
 }
 
-// Emits the pending move `mv` ending at plane point (ex, ey).
-void Interp::Impl::comp_emit(const CompMove& mv, double ex, double ey)
+// Emits the held move ending at plane point (ex, ey), then everything queued behind it
+// (plane-less moves at that point). Afterwards nothing is held.
+void Interp::Impl::comp_release(double ex, double ey)
 {
 	int a1, a2, a3;
 	plane_axes(a1, a2, a3);
-	Pos e = mv.end;
+	comp_pending = false;
+	canon.hold(false);
+	std::vector<HoldCanon::Item> q = canon.take();
+	const CompHeld& h = comp_held;
+	canon.block_begin(h.file, h.line);
+	Pos e = h.mv.end;
 	e[a1] = ex;
 	e[a2] = ey;
-	bool other_feed = mv.feed && mv.feedrate != feed;
-	if (other_feed)
-		canon.set_feed_rate(feed_mode == FeedMode::INVERSE_TIME ? mv.feedrate : mv.feedrate * unit_factor(AX_X));
-	if (mv.is_arc)
-		arc_out(mv.end, e, mv.cx, mv.cy, mv.rotation);
+	if (h.mv.is_arc)
+		arc_out(h.mv.end, e, h.mv.cx, h.mv.cy, h.mv.rotation);
 	else
-		comp_line_to(e, mv.feed);
-	if (other_feed)
-		send_feed();
+		comp_line_to(e, h.mv.feed);
+	for (auto& it : q) {
+		if (!it.move) {
+			it.call(canon.machine());
+			continue;
+		}
+		Pos p = it.prog;
+		p[a1] = ex;
+		p[a2] = ey;
+		comp_line_to(p, it.feed);
+	}
 }
 
+// Program end, '%', G40 followed by a move, G41 after G40: the held move ends at its
+// nominal offset end.
 void Interp::Impl::comp_flush()
 {
-	if (!comp_pending)
-		return;
-	int a1, a2, a3;
-	plane_axes(a1, a2, a3);
-	CompMove mv = comp_prev;
-	comp_pending = false;
-	double side = comp_prev_side_;
-	V B{mv.end[a1], mv.end[a2]};
-	V S{comp_start[a1], comp_start[a2]};
-	V t1 = tangent(mv.is_arc, S, B, V{mv.cx, mv.cy}, mv.rotation, true);
-	V P1 = B + comp_prev_radius_ * side * 1.0 * rot90(t1);
-	comp_emit(mv, P1.x, P1.y);
-	comp_corner = true;
-	comp_corner_prog = mv.end;
-	comp_corner_t[0] = t1.x;
-	comp_corner_t[1] = t1.y;
-	comp_first = false;
+	if (comp_pending)
+		comp_release(comp_held.p1[0], comp_held.p1[1]);
 }
 
-void Interp::Impl::comp_move(const CompMove& mv0)
+void Interp::Impl::comp_move(const CompMove& mv)
 {
-	CompMove mv = mv0;
-	mv.feedrate = feed;
 	int a1, a2, a3;
 	plane_axes(a1, a2, a3);
 	Pos start = program_pos();
 	V S{start[a1], start[a2]}, E{mv.end[a1], mv.end[a2]}, C{mv.cx, mv.cy};
-	double plane_len = len(E - S);
+	bool in_plane = mv.is_arc || len(E - S) >= EPS;
 
+	if (!in_plane) {
+		// a plunge: behind the held move, or (nothing held) where the tool is
+		if (comp_pending) {
+			canon.queue_move(mv.end, mv.feed);
+			comp_prog = mv.end;
+			return;
+		}
+		Pos p = mv.end;
+		Pos tool = to_program(mpos);
+		p[a1] = tool[a1];
+		p[a2] = tool[a2];
+		comp_line_to(p, mv.feed);
+		return;
+	}
 	if (comp_exit_next) {
 		if (mv.is_arc)
 			fail("The move just after exiting cutter compensation mode must be straight, not an arc");
 		comp_flush();
 		Pos here = to_program(mpos);
 		V H{here[a1], here[a2]};
-		if (comp_prev_radius_ > 0 && len(E - H) <= comp_prev_radius_)
+		if (comp_exit_radius > 0 && len(E - H) <= comp_exit_radius)
 			fail("Length of cutter compensation exit move is not greater than the tool radius");
 		comp_line_to(mv.end, mv.feed);
-		comp_exit_next = comp_pending = comp_corner = false;
+		comp_exit_next = false;
 		return;
 	}
 	double side = comp == 410 || comp == 411 ? 1 : -1;
 	double r = comp_radius;
-	if (!mv.is_arc && plane_len < EPS) {
-		// no motion in the plane (a Z move in G17)
-		if (!comp_pending && !comp_corner) {
-			comp_line_to(mv.end, mv.feed);
-			return;
-		}
-		comp_flush();
-		Pos p = to_program(mpos);
-		for (int a = 0; a < NUM_AXES; a++)
-			if (a != a1 && a != a2)
-				p[a] = mv.end[a];
-		comp_line_to(p, mv.feed);
-		comp_corner_prog = mv.end;
-		return;
-	}
+	double ro2 = 0;   // next arc: radius of the tool centre's path
 	if (mv.is_arc) {
-		double R = len(S - C);
 		double s = mv.rotation > 0 ? 1 : -1;
-		if (R - side * s * r <= EPS)
+		ro2 = len(S - C) - side * s * r;
+		if (ro2 <= EPS || len(E - C) - side * s * r <= EPS)
 			fail("Tool radius not less than arc radius with comp");
 	}
-	if (!comp_pending && !comp_corner) {
-		// entry move: wait for the next move to know where the offset path starts
-		if (mv.is_arc)
-			fail("Cutter compensation entry move must be a straight line (G0 or G1)");
-		if (plane_len <= r)
-			fail("Length of cutter compensation entry move is not greater than the tool radius");
-		comp_prev = mv;
-		comp_start = start;
-		comp_first = true;
+	V t2 = tangent(mv.is_arc, S, E, C, mv.rotation, S);
+	V t_end = tangent(mv.is_arc, S, E, C, mv.rotation, E);
+	V P2 = S + r * side * rot90(t2);   // the next move's nominal offset start
+	CompHeld next;
+	next.mv = mv;
+	next.file = sources[src]->name;
+	next.line = cur_line;
+	next.side = side;
+	next.radius = r;
+
+	if (!comp_pending) {
+		// entry move
+		V T = S;   // nothing held: the tool is at the programmed point
+		if (mv.is_arc) {
+			if (len(E - C) <= r)
+				fail("Radius of cutter compensation entry arc is not greater than the tool radius");
+			V p1 = E + r * side * rot90(t_end);
+			put2(next.p1, p1);
+			put2(next.t1, t_end);
+			next.ro = len(p1 - C);
+		} else {
+			double d = len(E - T);
+			if (d <= r)
+				fail("Length of cutter compensation entry move is not greater than the tool radius");
+			// the tool path leaves S turned towards its side by asin(r/d) so that it
+			// passes the programmed end point at the tool radius
+			V t = rotate(unit(E - T), side * std::asin(r / d));
+			put2(next.p1, T + std::sqrt(d * d - r * r) * t);
+			put2(next.t1, t);
+		}
+		put2(next.ts, T);
+		comp_held = next;
 		comp_pending = true;
-		comp_prev_side_ = side;
-		comp_prev_radius_ = r;
+		comp_prog = mv.end;
+		canon.hold(true);
 		return;
 	}
-	V t2 = tangent(mv.is_arc, S, E, C, mv.rotation, false);
-	V n2 = side * 1.0 * rot90(t2);
-	V B = S;
-	V P2 = B + r * n2;
-	if (comp_corner) {
-		V t1{comp_corner_t[0], comp_corner_t[1]};
-		double cr = cross(t1, t2);
-		if (r > 0 && side * cr < -EPS)
-			arc_out(comp_corner_prog, [&] { Pos p = to_program(mpos); p[a1] = P2.x; p[a2] = P2.y; return p; }(),
-			        B.x, B.y, cr < 0 ? -1 : 1);
-		else if (r > 0)
-			comp_line_to([&] { Pos p = to_program(mpos); p[a1] = P2.x; p[a2] = P2.y; return p; }(), mv.feed);
-		comp_corner = false;
-	} else {
-		const CompMove& pv = comp_prev;
-		V PS{comp_start[a1], comp_start[a2]}, PC{pv.cx, pv.cy};
-		V t1 = tangent(pv.is_arc, PS, B, PC, pv.rotation, true);
-		V P1 = B + r * side * 1.0 * rot90(t1);
-		double cr = cross(t1, t2), dt = dot(t1, t2);
-		if (comp_first) {
-			comp_emit(pv, P2.x, P2.y);
-			comp_first = false;
-		} else if (r == 0 || (std::fabs(cr) < EPS && dt > 0)) {
-			comp_emit(pv, P1.x, P1.y);
-		} else if (side * cr < 0 || std::fabs(cr) < EPS) {
-			// outside corner: around the corner point on an arc of the tool radius
-			comp_emit(pv, P1.x, P1.y);
-			int rot = cr < -EPS ? -1 : cr > EPS ? 1 : (side > 0 ? -1 : 1);
-			Pos e = pv.end;
-			e[a1] = P2.x;
-			e[a2] = P2.y;
-			arc_out(pv.end, e, B.x, B.y, rot);
+
+	// resolve the corner at S between the held move and this one
+	const CompHeld& h = comp_held;
+	V P1 = v2(h.p1), t1 = v2(h.t1), TS = v2(h.ts);
+	double cr = cross(t1, t2), turn = std::atan2(cr, dot(t1, t2));
+	double in_turn = side * turn;   // > 0: the corner turns towards the tool (inside)
+	V end1 = P1, start2 = P2;
+	bool corner_arc = false;
+	int arc_rot = 0;
+	if (r > 0 && std::fabs(turn) > 1e-12 && in_turn < 0) {
+		corner_arc = true;
+		arc_rot = std::fabs(cr) < EPS ? (side > 0 ? -1 : 1) : cr < 0 ? -1 : 1;
+	} else if (r > 0 && in_turn > 1e-12) {
+		const CompMove& pv = h.mv;
+		V PC{pv.cx, pv.cy};
+		V X{}, i1, i2;
+		bool ok;
+		const char* err;
+		if (!pv.is_arc && !mv.is_arc) {
+			X = TS + (cross(P2 - TS, t2) / cross(t1, t2)) * t1;
+			ok = true;
+			err = "";
+		} else if (!pv.is_arc) {
+			ok = line_circle(TS, t1, C, ro2, i1, i2);
+			err = "Arc move in concave corner cannot be reached by the tool without gouging";
+		} else if (!mv.is_arc) {
+			ok = line_circle(P2, t2, PC, h.ro, i1, i2);
+			err = "Arc to straight motion makes a corner the compensated tool can't fit in without gouging";
 		} else {
-			// inside corner: both offset paths end/start at their intersection
-			V X{}, i1, i2;
-			bool ok;
-			double s2 = mv.rotation > 0 ? 1 : -1, s1 = pv.rotation > 0 ? 1 : -1;
-			if (!pv.is_arc && !mv.is_arc) {
-				X = P1 + (cross(P2 - P1, t2) / cr) * t1;
-				ok = dot(X - P2, t2) <= len(E - S) + EPS;
-				if (!ok)
-					fail("Inside corner too tight: the compensated tool would gouge the next move");
-			} else if (!pv.is_arc) {
-				ok = line_circle(P1, t1, C, len(S - C) - side * s2 * r, i1, i2);
-				if (!ok)
-					fail("Straight to arc motion makes a corner the compensated tool can't fit in without gouging");
-				X = nearest(i1, i2, B);
-			} else if (!mv.is_arc) {
-				ok = line_circle(P2, t2, PC, len(B - PC) - side * s1 * r, i1, i2);
-				if (!ok)
-					fail("Arc to straight motion makes a corner the compensated tool can't fit in without gouging");
-				X = nearest(i1, i2, B);
-			} else {
-				ok = circle_circle(PC, len(B - PC) - side * s1 * r, C, len(S - C) - side * s2 * r, i1, i2);
-				if (!ok)
-					fail("Arc move in concave corner cannot be reached by the tool without gouging");
-				X = nearest(i1, i2, B);
-			}
-			if (len(X - B) > 10 * r + EPS)
+			ok = circle_circle(PC, h.ro, C, ro2, i1, i2);
+			err = "Arc move in concave corner cannot be reached by the tool without gouging";
+		}
+		if (ok && (pv.is_arc || mv.is_arc))
+			X = nearest(i1, i2, S);
+		if (!ok && in_turn >= CONCAVE_SMALL)
+			fail("%s", err);
+		if (ok) {
+			if (len(X - S) > 10 * r + EPS)
 				fail("Zero degree inside corner is invalid for cutter compensation");
-			comp_emit(pv, X.x, X.y);
+			if (!pv.is_arc && dot(X - TS, t1) < -EPS)
+				fail("Inside corner too tight: the compensated tool would gouge the previous move");
+			if (!mv.is_arc && dot(X - P2, t2) > len(E - S) + EPS)
+				fail("Inside corner too tight: the compensated tool would gouge the next move");
+			end1 = start2 = X;
 		}
 	}
-	comp_prev = mv;
-	comp_start = start;
+	comp_release(end1.x, end1.y);
+	Pos here = to_program(mpos);
+	Pos p2 = here;
+	p2[a1] = start2.x;
+	p2[a2] = start2.y;
+	if (corner_arc)
+		arc_out(here, p2, S.x, S.y, arc_rot);
+	else if (len(start2 - end1) > EPS)
+		comp_line_to(p2, mv.feed);   // nearly straight-on inside corner that has no intersection
+
+	put2(next.ts, start2);
+	put2(next.p1, E + r * side * rot90(t_end));
+	put2(next.t1, t_end);
+	if (mv.is_arc)
+		next.ro = len(v2(next.p1) - C);
+	comp_held = next;
 	comp_pending = true;
-	comp_prev_side_ = side;
-	comp_prev_radius_ = r;
+	comp_prog = mv.end;
+	canon.hold(true);
 }
 
 }  // namespace rs274

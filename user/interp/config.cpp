@@ -4,8 +4,8 @@
 // file's directory. Every key/value is also kept for #<_ini[section]key>.
 #include <cctype>
 #include <cstdlib>
-#include <fstream>
 
+#include "ini/ini_file.hpp"
 #include "rs274/interp.hpp"
 
 namespace rs274 {
@@ -44,52 +44,40 @@ static std::vector<std::string> path_list(const std::string& v, const std::strin
 
 bool Config::from_ini(const std::string& path, Config& cfg, std::string& error)
 {
-	std::ifstream in(path);
-	if (!in) {
-		error = path + ": cannot open INI file";
+	auto loaded = hal::ini::IniFile::load(path);
+	if (!loaded) {
+		error = loaded.error().message;
 		return false;
 	}
+	const hal::ini::IniFile& ini = *loaded;
 	std::string dir = ".";
 	size_t slash = path.rfind('/');
 	if (slash != std::string::npos)
 		dir = slash == 0 ? "/" : path.substr(0, slash);
-	std::string line, section;
-	int lineno = 0;
-	while (std::getline(in, line)) {
-		lineno++;
-		std::string t = trim(line);
-		if (t.empty() || t[0] == '#' || t[0] == ';')
-			continue;
-		if (t[0] == '[') {
-			size_t e = t.find(']');
-			if (e == std::string::npos) {
-				error = path + ":" + std::to_string(lineno) + ": unterminated section name";
-				return false;
-			}
-			section = upper(trim(t.substr(1, e - 1)));
-			continue;
-		}
-		size_t eq = t.find('=');
-		if (eq == std::string::npos)
-			continue;
-		std::string key = upper(trim(t.substr(0, eq)));
-		std::string k = section + "]" + key;
-		if (!cfg.ini.count(k))
-			cfg.ini[k] = trim(t.substr(eq + 1));
-	}
+	// #<_ini[section]key> sees what the reader sees: the first occurrence of each key
+	// in the first block of its section, names as written (G-code upper-cases its side).
+	for (const auto& e : ini.entries())
+		if (e.reachable)
+			cfg.ini.emplace(e.section + "]" + e.key, e.value);
 	auto get = [&](const char* sec, const char* key, std::string& v) {
-		auto it = cfg.ini.find(std::string(sec) + "]" + key);
-		if (it == cfg.ini.end())
+		auto found = ini.find(sec, key);
+		if (!found)
 			return false;
-		v = it->second;
+		v = *found;
 		return true;
 	};
 	auto rel = [&](const std::string& p) { return p.empty() || p[0] == '/' ? p : dir + "/" + p; };
-	auto flag = [&](const char* sec, const char* key, bool& out) {
-		std::string v;
-		if (get(sec, key, v))
-			out = std::atoi(v.c_str()) != 0;
+	bool bad = false;   // the first malformed value, reported as FILE:LINE: [S]K: ...
+	auto keep = [&](auto result, auto& out) {
+		if (result)
+			out = *result;
+		else if (!bad) {
+			error = result.error().message;
+			bad = true;
+		}
 	};
+	auto flag = [&](const char* sec, const char* key, bool& out) { keep(ini.get_bool(sec, key, out), out); };
+	auto real = [&](const char* sec, const char* key, double& out) { keep(ini.get_double(sec, key, out), out); };
 	std::string v;
 	if (get("TRAJ", "LINEAR_UNITS", v)) {
 		std::string u = upper(v);
@@ -127,13 +115,11 @@ bool Config::from_ini(const std::string& path, Config& cfg, std::string& error)
 	if (get("RS274NGC", "USER_M_PATH", v))
 		for (auto& p : path_list(v, dir))
 			cfg.user_m_path.push_back(p);
-	if (get("RS274NGC", "ORIENT_OFFSET", v))
-		cfg.orient_offset = std::atof(v.c_str());
-	if (get("RS274NGC", "CENTER_ARC_RADIUS_TOLERANCE_INCH", v))
-		cfg.center_arc_tolerance_inch = std::atof(v.c_str());
-	if (get("RS274NGC", "CENTER_ARC_RADIUS_TOLERANCE_MM", v))
-		cfg.center_arc_tolerance_mm = std::atof(v.c_str());
+	real("RS274NGC", "ORIENT_OFFSET", cfg.orient_offset);
+	real("RS274NGC", "CENTER_ARC_RADIUS_TOLERANCE_INCH", cfg.center_arc_tolerance_inch);
+	real("RS274NGC", "CENTER_ARC_RADIUS_TOLERANCE_MM", cfg.center_arc_tolerance_mm);
 	flag("RS274NGC", "DISABLE_G92_PERSISTENCE", cfg.disable_g92_persistence);
+	flag("RS274NGC", "DISABLE_FANUC_STYLE_SUB", cfg.disable_fanuc_style_sub);
 	flag("RS274NGC", "INI_VARS", cfg.ini_vars);
 	flag("RS274NGC", "HAL_PIN_VARS", cfg.hal_pin_vars);
 	if (get("EMCIO", "TOOL_TABLE", v))
@@ -142,7 +128,7 @@ bool Config::from_ini(const std::string& path, Config& cfg, std::string& error)
 	flag("EMCIO", "TOOL_CHANGE_QUILL_UP", cfg.tool_change_quill_up);
 	flag("EMCIO", "TOOL_CHANGE_AT_G30", cfg.tool_change_at_g30);
 	flag("EMCIO", "TOOL_CHANGE_WITH_SPINDLE_ON", cfg.tool_change_with_spindle_on);
-	return true;
+	return !bad;
 }
 
 }  // namespace rs274

@@ -114,6 +114,17 @@ void Interp::Impl::execute_block(Block& b)
 {
 	if (cfg.max_blocks > 0 && ++blocks > cfg.max_blocks)
 		fail("Program exceeded %ld blocks", cfg.max_blocks);
+	if (nurbs_open) {
+		// gcode.md 8: only control points (X Y [P]) and the closing G5.3 in a NURBS block
+		bool ok = b.m.empty() && (b.g.empty() || (b.g.size() == 1 && b.g[0] == 53));
+		for (int c = 0; c < 128 && ok; c++)
+			ok = !b.has[c] || c == 'x' || c == 'y' || (c == 'p' && b.g.empty());
+		if (!ok)
+			fail("Only X Y P control point lines and G5.3 may follow G5.2");
+	}
+	if (src == main_src && frames.size() == 1 && !main_started)
+		for (bool h : b.has)
+			main_started = main_started || h;   // more than a comment: the program has begun
 	do_comment(b);
 
 	// G96/G97
@@ -223,6 +234,7 @@ void Interp::Impl::execute_block(Block& b)
 	}
 	switch (b.gmode[0]) {
 	case 100: do_g10(b); break;
+	case 53: nurbs_end(); break;
 	case 280: case 281: case 300: case 301: do_g28(b, b.gmode[0]); break;
 	case 520: case 920: do_g92(b, b.gmode[0]); break;
 	default: break;
@@ -413,6 +425,8 @@ void Interp::Impl::do_stop(const Block& b)
 	case 1: canon.optional_program_stop(); break;
 	case 60: canon.pallet_shuttle(); canon.program_stop(); break;
 	case 2: case 30: program_end(b.mmode[4]); break;
+	case 98: fanuc_call(b); break;
+	case 99: fanuc_return(); break;
 	default: break;
 	}
 }

@@ -26,6 +26,12 @@ struct InterpError {
 };
 [[noreturn]] void fail(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
 
+}  // namespace rs274
+
+#include "hold_canon.hpp"
+
+namespace rs274 {
+
 constexpr int MAX_PARAM = 5602;          // #1 .. #5601
 constexpr size_t MAX_LINE = 255;         // "Command too long" at 255 characters or more
 constexpr int MAX_EXPR_DEPTH = 40;       // nested [ ] and functions in one value
@@ -35,7 +41,8 @@ constexpr size_t MAX_NAMED_PARAMS = 100000;  // per scope: bounded memory on hos
 
 // G codes are kept as value*10 (G38.2 -> 382).
 enum OKind { O_NONE, O_SUB, O_ENDSUB, O_CALL, O_RETURN, O_IF, O_ELSEIF, O_ELSE, O_ENDIF,
-             O_WHILE, O_ENDWHILE, O_DO, O_BREAK, O_CONTINUE, O_REPEAT, O_ENDREPEAT };
+             O_WHILE, O_ENDWHILE, O_DO, O_BREAK, O_CONTINUE, O_REPEAT, O_ENDREPEAT,
+             O_FANUC };   // O_FANUC: a bare "O<n>", a Fanuc-style program number
 
 struct Block {
 	int line = 0;
@@ -96,6 +103,9 @@ struct Frame {
 	std::vector<LoopBlock> loops;
 	std::optional<ModalState> m70;      // M70 save at this level
 	std::optional<ModalState> m73;      // M73: restored on return
+	bool fanuc = false;                 // M98 call: no argument scope, M99 returns
+	long fanuc_left = 0;                // M98 L: runs left including this one
+	size_t fanuc_start = 0;             // line index of its O<n>
 };
 
 struct Source {
@@ -108,7 +118,7 @@ struct SubDef { int src; size_t line; };
 
 struct Interp::Impl {
 	Impl(Canon& c, Config cfg);
-	Canon& canon;
+	HoldCanon canon;         // forwards to the machine's canon; queues behind a held comp move
 	Config cfg;
 	Error err;
 
@@ -122,6 +132,10 @@ struct Interp::Impl {
 	bool seen_first = false; // a non-blank line has been read in the main source
 	bool ended = false;
 	int cur_line = 0;
+	size_t restart_pc = 0;   // where M99 in the main program restarts it (after a leading %)
+	bool main_started = false; // a block of the main program ran (an O<n> now is a subprogram)
+	long m99_restarts = 0;
+	int sub_style = 0;       // subroutines used by this program: 1 o-word, 2 Fanuc (M98/M99)
 	long blocks = 0;
 	std::vector<Frame> frames;
 	std::map<std::string, SubDef> subs;
@@ -171,6 +185,14 @@ struct Interp::Impl {
 	bool cycle_has_r = false, cycle_has_z = false, cycle_has_p = false, cycle_has_q = false;
 	bool cycle_has_ijk = false;
 
+	// splines (splines.cpp)
+	bool g5_continues = false;   // the last motion was a G5: I J may be omitted
+	double g5_last_pq[2] = {0, 0};
+	bool nurbs_open = false;     // between G5.2 and G5.3
+	int nurbs_order = 3;
+	std::vector<std::array<double, 3>> nurbs_cp;   // x, y, weight
+	Pos nurbs_pos{};             // the last control point (the program's current point)
+
 	// cutter radius compensation (comp.cpp)
 	struct CompMove {
 		bool is_arc = false;
@@ -179,18 +201,23 @@ struct Interp::Impl {
 		int rotation = 0;     // arc turns (sign = direction)
 		bool feed = true;     // feed or traverse
 		int line = 0;
-		double feedrate = 0;
 	};
-	bool comp_pending = false;   // a programmed move waits for the next one
-	CompMove comp_prev;           // that move
-	Pos comp_start{};             // programmed start point of comp_prev
-	bool comp_first = false;      // comp_prev is the entry move
-	bool comp_exit_next = false;  // next move follows G40
-	bool comp_corner = false;     // the tool waits at the end offset of the last move
-	double comp_prev_side_ = 1;   // side (+1 left) and radius comp_prev was made with
-	double comp_prev_radius_ = 0;
-	Pos comp_corner_prog{};       // ... whose programmed end (and where the program is)
-	double comp_corner_t[2] = {0, 0};   // ... and end tangent are these
+	// The move held back until the next one is known (its end depends on that corner).
+	struct CompHeld {
+		CompMove mv;
+		std::string file;     // where it came from (block_begin when it is emitted)
+		int line = 0;
+		double ts[2] = {0, 0};   // where the tool starts it (plane coordinates)
+		double p1[2] = {0, 0};   // its nominal tool end: programmed end + radius along the normal
+		double t1[2] = {0, 0};   // its end tangent
+		double ro = 0;           // arc: radius of the tool centre's path at the end
+		double side = 1, radius = 0;
+	};
+	bool comp_pending = false;   // comp_held is waiting
+	CompHeld comp_held;
+	Pos comp_prog{};             // programmed current point while a move is held
+	bool comp_exit_next = false; // the next move in the plane follows G40
+	double comp_exit_radius = 0;
 
 	// --- reader.cpp ---
 	Block read_block(const std::string& raw, int line);
@@ -220,6 +247,10 @@ struct Interp::Impl {
 	void call_sub(const std::string& label, const std::vector<double>& args);
 	void return_sub(bool has_value, double value);
 	double eval_rest(const std::string& rest, bool required, bool& present);
+	void sub_style_is(int style);
+	void fanuc_call(const Block& b);
+	void fanuc_return();
+	size_t fanuc_find_m99(size_t from, const std::string& label);
 	// --- exec.cpp ---
 	void execute_block(Block& b);
 	void do_comment(const Block& b);
@@ -241,7 +272,7 @@ struct Interp::Impl {
 	Pos to_program(const Pos& mach) const;
 	// The programmed current point: with cutter comp a move may be pending (its end
 	// is where the program is, the tool has not got there yet).
-	Pos program_pos() const { return comp_pending ? comp_prev.end : comp_corner ? comp_corner_prog : to_program(mpos); }
+	Pos program_pos() const { return comp_pending ? comp_prog : nurbs_open ? nurbs_pos : to_program(mpos); }
 	void select_coord(int index);
 	void do_g10(const Block& b);
 	void do_g92(const Block& b, int code);
@@ -262,12 +293,18 @@ struct Interp::Impl {
 	// --- cycles.cpp ---
 	void do_cycle(Block& b, int code);
 	void do_g76(const Block& b);
+	// --- splines.cpp ---
+	double spline_tolerance() const;
+	void spline_checks(const Block& b, const char* what);
+	void do_spline(const Block& b, int code, const Pos& end);
+	void nurbs_point(const Block& b, const Pos& end);
+	void nurbs_end();
 	// --- comp.cpp ---
 	void comp_start_cmd(const Block& b, int code);
 	void comp_stop_cmd();
 	void comp_move(const CompMove& mv);
 	void comp_flush();
-	void comp_emit(const CompMove& mv, double ex, double ey);
+	void comp_release(double ex, double ey);
 	void comp_line_to(const Pos& prog, bool feed);
 	// --- tools.cpp ---
 	void load_tool_table();
@@ -283,6 +320,7 @@ std::string normalize_line(const std::string& raw, std::string* comment, bool* h
 // The O-word of a line, without evaluating anything (used while skipping and scanning):
 // false if the line has no O-word or its label is computed (o[...]).
 bool o_header(const std::string& raw, std::string& label, OKind& kind);
+bool has_m99(const std::string& raw);   // the line has an M99 word
 int g_group(int code);   // modal group of G code x10, -1 unknown
 int m_group(int code);   // M group, -1 unknown
 std::string fmt(const char* f, ...) __attribute__((format(printf, 1, 2)));

@@ -131,6 +131,10 @@ bool Interp::open_text(const std::string& name, const std::string& text)
 	s.pc = 0;
 	s.percent_mode = s.seen_first = s.ended = false;
 	s.blocks = 0;
+	s.restart_pc = 0;
+	s.m99_restarts = 0;
+	s.main_started = false;
+	s.sub_style = 0;
 	return true;
 }
 
@@ -178,6 +182,7 @@ Status Interp::step()
 			if (percent_line(raw)) {
 				if (!s.seen_first) {
 					s.seen_first = s.percent_mode = true;
+					s.restart_pc = idx + 1;
 					return Status::OK;
 				}
 				s.comp_flush();
@@ -201,6 +206,8 @@ Status Interp::step()
 			s.execute_block(b);
 	} catch (const InterpError& e) {
 		s.err = Error{so->name, s.cur_line, e.message};
+		s.canon.drop();          // calls held behind a comp move die with the program
+		s.comp_pending = false;
 		return Status::ERROR;
 	}
 	return s.ended ? Status::END : Status::OK;
@@ -230,6 +237,8 @@ Status Interp::execute_mdi(const std::string& line)
 	size_t saved_pc = s.pc;
 	size_t base = s.frames.size();
 	bool saved_ended = s.ended;
+	int saved_style = s.sub_style;
+	s.sub_style = 0;   // MDI calls are not part of the program's subroutine style
 	s.src = mdi;
 	s.main_src = mdi;
 	s.pc = 0;
@@ -246,6 +255,7 @@ Status Interp::execute_mdi(const std::string& line)
 	s.main_src = saved_main;
 	s.pc = saved_pc;
 	s.ended = saved_ended;
+	s.sub_style = saved_style;
 	return st == Status::ERROR ? Status::ERROR : Status::OK;
 }
 
@@ -258,16 +268,59 @@ void Interp::reset()
 	s.ended = false;
 	s.comp_pending = false;
 	s.comp_exit_next = false;
+	s.canon.drop();
+	s.nurbs_open = false;
 	s.cycle_code = -1;
 }
 
 bool Interp::save_parameters() { return impl_->cfg.parameter_file.empty() || save_parameters(impl_->cfg.parameter_file); }
 bool Interp::save_parameters(const std::string& path) { return impl_->write_param_file(path); }
+void Interp::set_machine_position(const Pos& p)
+{
+	if (!impl_->comp_pending)
+		impl_->mpos = p;
+}
 void Interp::set_block_delete(bool on) { impl_->block_delete = on; }
 void Interp::set_optional_stop(bool on) { impl_->optional_stop = on; }
 const Error& Interp::error() const { return impl_->err; }
 int Interp::line() const { return impl_->cur_line; }
 double Interp::parameter(int index) const { return impl_->get_param(index); }
+
+std::vector<int> Interp::active_g_codes() const
+{
+	const Impl& m = *impl_;
+	static const int plane[] = {170, 190, 180, 171, 191, 181};   // XY YZ XZ UV VW UW
+	static const int coord[] = {540, 550, 560, 570, 580, 590, 591, 592, 593};
+	int mc = m.mc == MotionControl::EXACT_PATH ? 610 : m.mc == MotionControl::EXACT_STOP ? 611 : 640;
+	int feed = m.feed_mode == FeedMode::INVERSE_TIME ? 930 : m.feed_mode == FeedMode::UNITS_PER_REV ? 950 : 940;
+	return {m.motion,
+		plane[static_cast<int>(m.plane)],
+		m.comp,
+		m.units == Units::INCH ? 200 : 210,
+		m.incremental ? 910 : 900,
+		feed,
+		coord[(m.coord >= 1 && m.coord <= 9 ? m.coord : 1) - 1],
+		m.tlo_mode,
+		m.retract_old_z ? 980 : 990,
+		mc,
+		m.css ? 960 : 970,
+		m.ijk_absolute ? 901 : 911,
+		m.lathe_diameter ? 70 : 80};
+}
+
+std::vector<int> Interp::active_m_codes() const
+{
+	const Impl& m = *impl_;
+	std::vector<int> v{m.spindle_dir > 0 ? 3 : m.spindle_dir < 0 ? 4 : 5};
+	if (m.mist)
+		v.push_back(7);
+	if (m.flood)
+		v.push_back(8);
+	if (!m.mist && !m.flood)
+		v.push_back(9);
+	v.push_back(m.feed_override && m.speed_override ? 48 : 49);
+	return v;
+}
 
 bool Interp::named_parameter(const std::string& name, double& value) const
 {

@@ -121,6 +121,8 @@ void Interp::Impl::do_motion(Block& b, bool g53)
 	}
 	Pos cur = program_pos();
 	Pos end = end_point(b, cur);
+	if (code != 50)
+		g5_continues = false;
 	switch (code) {
 	case 0:
 	case 10: {
@@ -145,6 +147,8 @@ void Interp::Impl::do_motion(Block& b, bool g53)
 	case 331: do_g33(b, code, end); break;
 	case 382: case 383: case 384: case 385: do_probe(b, code, end); break;
 	case 760: do_g76(b); break;
+	case 50: case 51: do_spline(b, code, end); break;
+	case 52: nurbs_point(b, end); break;
 	default: fail("Unknown g code used");
 	}
 }

@@ -29,6 +29,7 @@ static const char* kind_name(OKind k)
 	case O_CONTINUE: return "continue";
 	case O_REPEAT: return "repeat";
 	case O_ENDREPEAT: return "endrepeat";
+	case O_FANUC: return "(program number)";
 	default: return "?";
 	}
 }
@@ -110,8 +111,23 @@ void Interp::Impl::execute_o(Block& b)
 		if (++lb->iterations > cfg.max_loop_iterations)
 			fail("Loop %s exceeded %ld iterations", show(L).c_str(), cfg.max_loop_iterations);
 	};
+	if (nurbs_open)
+		fail("Only X Y P control point lines and G5.3 may follow G5.2");
+	if (b.o != O_FANUC && src == main_src)
+		main_started = true;
 	switch (b.o) {
+	case O_FANUC:
+		if (cfg.disable_fanuc_style_sub)
+			fail("%s without a statement (Fanuc-style programs are disabled)", show(L).c_str());
+		sub_style_is(2);
+		// The main program's own number, or a subprogram reached in sequence: skipped
+		// up to its M99 (it runs only when M98 calls it).
+		if (src == main_src && frames.size() == 1 && !main_started)
+			break;
+		pc = fanuc_find_m99(pc, L) + 1;
+		break;
 	case O_SUB: {
+		sub_style_is(1);
 		if (frames.size() > 1)
 			fail("Nested subroutine definition (%s sub inside a subroutine)", show(L).c_str());
 		eval_rest(b.o_rest, false, present);
@@ -131,6 +147,7 @@ void Interp::Impl::execute_o(Block& b)
 		break;
 	}
 	case O_CALL: {
+		sub_style_is(1);
 		std::vector<double> args;
 		const std::string& r = b.o_rest;
 		size_t i = 0;
@@ -339,6 +356,117 @@ void Interp::Impl::return_sub(bool has_value, double value)
 		globals["_value"] = value;
 		globals["_value_returned"] = 1;
 	}
+}
+
+// gcode.md 6: a program uses o-word subroutines or Fanuc-style ones, not both.
+static const char mix_error[] = "Cannot mix Fanuc-style (M98/M99) and o-word (sub/call) subroutines in one program";
+
+void Interp::Impl::sub_style_is(int style)
+{
+	if (sub_style != 0 && sub_style != style)
+		fail("%s", mix_error);
+	sub_style = style;
+}
+
+size_t Interp::Impl::fanuc_find_m99(size_t from, const std::string& label)
+{
+	const Source& s = *sources[src];
+	std::string key = "m99|" + std::to_string(from);
+	auto c = sources[src]->scan_cache.find(key);
+	if (c != s.scan_cache.end())
+		return c->second;
+	for (size_t i = from; i < s.lines.size(); i++) {
+		std::string lab;
+		OKind k;
+		if (o_header(s.lines[i], lab, k) && k == O_FANUC) {
+			cur_line = (int)i + 1;
+			fail("%s starts before the M99 of %s", show(lab).c_str(), show(label).c_str());
+		}
+		if (has_m99(s.lines[i])) {
+			if (sources[src]->scan_cache.size() < 100000)
+				sources[src]->scan_cache[key] = i;
+			return i;
+		}
+	}
+	fail("No M99 found for %s", show(label).c_str());
+}
+
+// M98 P<n> [L<count>]: runs O<n> (of the same file) count times; #1-#30 stay global.
+void Interp::Impl::fanuc_call(const Block& b)
+{
+	if (!b.w('p'))
+		fail("P word missing with M98");
+	double pv = b.v('p');
+	if (pv < 0 || std::fabs(pv - std::nearbyint(pv)) > 0.0001 || pv > 99999999)
+		fail("P value with M98 must be a non-negative integer program number");
+	long count = b.w('l') ? std::lround(b.v('l')) : 1;
+	sub_style_is(2);
+	if (count == 0)
+		return;
+	if ((int)frames.size() > MAX_CALL_DEPTH)
+		fail("Too many subroutine levels");
+	std::string label = std::to_string(std::lround(pv));
+	Source& s = *sources[src];
+	std::string key = "o|" + label;
+	size_t at;
+	auto c = s.scan_cache.find(key);
+	if (c != s.scan_cache.end()) {
+		at = c->second;
+	} else {
+		at = s.lines.size();
+		for (size_t i = 0; i < s.lines.size() && at == s.lines.size(); i++) {
+			std::string lab;
+			OKind k;
+			if (o_header(s.lines[i], lab, k) && k == O_FANUC && lab == label)
+				at = i;
+		}
+		if (at == s.lines.size())
+			fail("Unknown program number %s for M98", show(label).c_str());
+		if (s.scan_cache.size() < 100000)
+			s.scan_cache[key] = at;
+	}
+	Frame fr;
+	fr.label = label;
+	fr.fanuc = true;
+	fr.fanuc_left = count;
+	fr.fanuc_start = at;
+	fr.ret_src = src;
+	fr.ret_pc = pc;
+	frames.push_back(std::move(fr));
+	pc = at + 1;
+}
+
+// M99: the end of one run of a subprogram (again while M98's L count lasts), or, in
+// the main program, a jump back to its start (an endless program; in MDI nothing).
+void Interp::Impl::fanuc_return()
+{
+	if (frames.size() > 1) {
+		Frame& f = frames.back();
+		if (!f.fanuc)
+			fail("%s", mix_error);   // M99 inside an o-word subroutine
+		if (--f.fanuc_left > 0) {
+			pc = f.fanuc_start + 1;
+			return;
+		}
+		Frame fr = std::move(frames.back());
+		frames.pop_back();
+		if (fr.m73)
+			restore_modal(*fr.m73);
+		src = fr.ret_src;
+		pc = fr.ret_pc;
+		return;
+	}
+	if (src == mdi_src)
+		return;
+	sub_style_is(2);
+	if (cfg.max_m99_restarts >= 0 && m99_restarts >= cfg.max_m99_restarts) {
+		comp_flush();
+		ended = true;
+		return;
+	}
+	m99_restarts++;
+	pc = restart_pc;
+	main_started = false;
 }
 
 }  // namespace rs274

@@ -98,7 +98,7 @@ bool Interp::Impl::predefined(const std::string& n, double& v) const
 		{"_feed_hold", feed_hold ? 1.0 : 0.0}, {"_feed", feed}, {"_rpm", speed},
 		{"_current_tool", (double)current_tool}, {"_current_pocket", (double)current_pocket},
 		{"_selected_tool", (double)selected_tool}, {"_selected_pocket", (double)selected_pocket},
-		{"_task", 0}, {"_call_level", (double)frames.size() - 1}, {"_remap_level", 0},
+		{"_task", cfg.in_task ? 1.0 : 0.0}, {"_call_level", (double)frames.size() - 1}, {"_remap_level", 0},
 	};
 	auto it = table.find(n);
 	if (it == table.end())

@@ -58,9 +58,9 @@ bool Block::any_axis() const
 int g_group(int c)
 {
 	switch (c) {
-	case 40: case 100: case 280: case 281: case 300: case 301: case 520: case 530: case 920:
+	case 40: case 53: case 100: case 280: case 281: case 300: case 301: case 520: case 530: case 920:
 		return 0;
-	case 0: case 10: case 20: case 30: case 330: case 331: case 382: case 383: case 384: case 385:
+	case 0: case 10: case 20: case 30: case 50: case 51: case 52: case 330: case 331: case 382: case 383: case 384: case 385:
 	case 730: case 740: case 760: case 800: case 810: case 820: case 830: case 840: case 850:
 	case 860: case 870: case 880: case 890:
 		return 1;
@@ -85,7 +85,7 @@ int g_group(int c)
 int m_group(int c)
 {
 	switch (c) {
-	case 0: case 1: case 2: case 30: case 60: return 4;
+	case 0: case 1: case 2: case 30: case 60: case 98: case 99: return 4;
 	case 62: case 63: case 64: case 65: case 66: case 67: case 68: return 5;
 	case 6: case 61: return 6;
 	case 3: case 4: case 5: case 19: case 70: case 71: case 72: case 73: return 7;
@@ -151,6 +151,11 @@ static size_t skip_line_start(const std::string& t, size_t i)
 
 static OKind read_o_keyword(const std::string& t, size_t& i)
 {
+	size_t j = i;
+	while (j < t.size() && t[j] == '\x01')
+		j++;
+	if (j >= t.size())
+		return O_FANUC;   // nothing (or only a comment) after the label
 	for (const auto& k : o_keywords) {
 		size_t n = std::strlen(k.word);
 		if (t.compare(i, n, k.word) == 0) {
@@ -181,6 +186,20 @@ static bool read_static_label(const std::string& t, size_t& i, std::string& labe
 		}
 		label = std::to_string(v);
 		return true;
+	}
+	return false;
+}
+
+bool has_m99(const std::string& raw)
+{
+	try {
+		std::string t = normalize_line(raw, nullptr, nullptr);
+		for (size_t p = t.find("m99"); p != std::string::npos; p = t.find("m99", p + 1)) {
+			char n = p + 3 < t.size() ? t[p + 3] : '\0';
+			if (!std::isdigit((unsigned char)n) && n != '.')
+				return true;
+		}
+	} catch (const InterpError&) {
 	}
 	return false;
 }
@@ -217,6 +236,8 @@ void Interp::Impl::read_o_word(const std::string& t, size_t& i, Block& b)
 		}
 	}
 	b.o = read_o_keyword(t, i);
+	if (b.o == O_FANUC && !std::isdigit((unsigned char)b.o_label[0]))
+		fail("Fanuc-style program number o%s must be a number", b.o_label.c_str());
 	b.o_rest = t.substr(i);
 	// Nothing but a comment after the statement's own expressions is checked when
 	// they are evaluated (oword.cpp).
@@ -345,7 +366,7 @@ void Interp::Impl::read_items(const std::string& t, size_t& i, Block& b)
 			if (code > 199)
 				fail("M-code greater than 199: M%d", code);
 			int grp = m_group(code);
-			if (grp < 0)
+			if (grp < 0 || ((code == 98 || code == 99) && cfg.disable_fanuc_style_sub))
 				fail("Unknown m code used: M%d", code);
 			if (b.m.size() >= 4)
 				fail("Too many m codes on line");

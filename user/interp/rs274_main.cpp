@@ -6,6 +6,7 @@
 #include <getopt.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <iostream>
 #include <sstream>
@@ -30,6 +31,8 @@ static void usage(std::FILE* f)
 	    "  -s, --startup CODE     G-code run before the program (overrides RS274NGC_STARTUP_CODE)\n"
 	    "  -b, --block-delete     skip lines that start with '/'\n"
 	    "  -n, --no-save          do not write the parameter file back\n"
+	    "  -r, --m99-restarts N   M99 in the main program restarts it N times, then ends it\n"
+	    "                         (default 0: the program runs once; -1: endless)\n"
 	    "  -h, --help             this text\n"
 	    "Exit status: 0 program ended (M2, M30 or closing %), 1 error (file:line: message on\n"
 	    "standard error), 2 bad usage.\n",
@@ -45,13 +48,15 @@ int main(int argc, char** argv)
 		{"startup", required_argument, nullptr, 's'},
 		{"block-delete", no_argument, nullptr, 'b'},
 		{"no-save", no_argument, nullptr, 'n'},
+		{"m99-restarts", required_argument, nullptr, 'r'},
 		{"help", no_argument, nullptr, 'h'},
 		{nullptr, 0, nullptr, 0},
 	};
 	const char *ini = nullptr, *tools = nullptr, *params = nullptr, *startup = nullptr;
 	bool block_delete = false, save = true;
+	long restarts = 0;
 	int c;
-	while ((c = getopt_long(argc, argv, "i:t:p:s:bnh", longopts, nullptr)) != -1) {
+	while ((c = getopt_long(argc, argv, "i:t:p:s:r:bnh", longopts, nullptr)) != -1) {
 		switch (c) {
 		case 'i': ini = optarg; break;
 		case 't': tools = optarg; break;
@@ -59,6 +64,15 @@ int main(int argc, char** argv)
 		case 's': startup = optarg; break;
 		case 'b': block_delete = true; break;
 		case 'n': save = false; break;
+		case 'r': {
+			char* e;
+			restarts = std::strtol(optarg, &e, 10);
+			if (*e || e == optarg || restarts < -1) {
+				std::fprintf(stderr, "rs274: -r needs a number of restarts (-1 = endless): %s\n", optarg);
+				return 2;
+			}
+			break;
+		}
 		case 'h': usage(stdout); return 0;
 		default: usage(stderr); return 2;
 		}
@@ -80,6 +94,7 @@ int main(int argc, char** argv)
 		cfg.parameter_file = params;
 	if (startup)
 		cfg.startup_code = startup;
+	cfg.max_m99_restarts = restarts;
 
 	std::ios::sync_with_stdio(false);
 	rs274::PrintCanon canon(std::cout, cfg.axes);

@@ -147,12 +147,20 @@ static Error helper_error(const std::string& what, const HelperRun& r)
     return Error{r.status == 2 ? -EPERM : -EIO, what + ": " + first};
 }
 
+std::vector<std::string> core_insert_argv(const std::string& core)
+{
+    std::vector<std::string> argv{"insert", core};
+    if (const char* size = std::getenv("HAL_SIZE"); core == "hal_lib" && size && *size)
+        argv.push_back(std::string("hal_size=") + size);
+    return argv;
+}
+
 Result<void> load(const std::string& name, const std::vector<std::string>& args)
 {
     for (const char* core : {"rtapi", "hal_lib"}) {
         if (name == core || module_loaded(core))
             continue;
-        HelperRun r = run_helper({"insert", core});
+        HelperRun r = run_helper(core_insert_argv(core));
         if (r.status != 0)
             return helper_error(std::string("loadrt ") + core, r);
     }

@@ -57,6 +57,20 @@ bool is_core(const std::string& name)
     return name == "rtapi" || name == "hal_lib";
 }
 
+// rtapi.ko reaches Linux's parport layer only through this module, which links
+// against parport.ko (kernel/rtapi/rtapi_parport_linux.h). It is no HAL module: it
+// comes and goes with the modules that claim ports.
+const char* const parport_linux = "rtapi_parport_linux";
+
+// True when the .ko at 'path' imports 'symbol' (a NUL-terminated name in its
+// string table; the module's own exports are not in modules loadrt loads).
+bool imports_symbol(const std::string& path, const std::string& symbol)
+{
+    std::ifstream in(path, std::ios::binary);
+    std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    return data.find(std::string(1, '\0') + symbol + std::string(1, '\0')) != std::string::npos;
+}
+
 std::string first_line(const std::string& text)
 {
     return text.substr(0, text.find('\n'));
@@ -104,6 +118,22 @@ Error insert_error(const std::string& name, const HelperRun& run, unsigned long 
     return Error{code, msg};
 }
 
+// Before a module that claims parallel ports (imports hal_parport_get) is inserted:
+// when Linux's parport layer is loaded, rtapi_parport_linux too, so that ports Linux
+// drives can be claimed through it whether parport came before or after rtapi.ko.
+Result<void> prepare_parport(const std::string& ko)
+{
+    std::error_code ec;
+    if (module_loaded(parport_linux) || !fs::exists("/sys/module/parport", ec) ||
+        !imports_symbol(ko, "hal_parport_get"))
+        return ok();
+    unsigned long long seq = next_message_seq();
+    HelperRun r = run_helper({"insert", parport_linux});
+    if (r.status != 0)
+        return insert_error(parport_linux, r, seq);
+    return ok();
+}
+
 Result<void> remove(const std::string& name)
 {
     HelperRun r = run_helper({"remove", name});
@@ -126,7 +156,7 @@ std::vector<std::string> hal_modules()
             users.insert(m.users.begin(), m.users.end());
     std::vector<std::string> out;
     for (const ProcModule& m : all)
-        if (!is_core(m.name) && users.count(m.name))
+        if (!is_core(m.name) && m.name != parport_linux && users.count(m.name))
             out.push_back(m.name);
     return out;
 }
@@ -137,7 +167,7 @@ Result<void> load_core()
         if (module_loaded(core))
             continue;
         unsigned long long seq = next_message_seq();
-        HelperRun r = run_helper({"insert", core});
+        HelperRun r = run_helper(core_insert_argv(core));
         if (r.status != 0)
             return insert_error(core, r, seq);
     }
@@ -227,6 +257,8 @@ Result<void> load_module(const std::string& name, const std::vector<std::string>
         std::replace(joined->begin(), joined->end(), '"', '\'');
     if (!joined->empty() && joined->find('"') == std::string::npos)
         argv.push_back(std::string(args_param) + "=\"" + *joined + "\"");
+    if (auto r = prepare_parport(ko); !r)
+        return r;
     unsigned long long seq = next_message_seq();
     HelperRun r = run_helper(argv);
     if (r.status != 0)
@@ -246,7 +278,7 @@ Result<void> unload_module(const std::string& name)
     for (;;) {
         std::vector<std::string> mods = hal_modules();
         if (mods.empty())
-            return ok();
+            return module_loaded(parport_linux) ? remove(parport_linux) : ok();
         bool progress = false;
         for (const ProcModule& m : proc_modules()) {
             if (m.refcount != 0 || std::find(mods.begin(), mods.end(), m.name) == mods.end())

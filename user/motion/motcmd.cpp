@@ -61,6 +61,9 @@ void print_status(const motion_status& s)
     std::printf("world-cmd");
     for (int l = 0; l < MOTION_MAX_AXES; ++l)
         std::printf(" %c %.6f", letters[l], s.carte_pos_cmd.v[l]);
+    std::printf("\nprobed-pos");
+    for (int l = 0; l < MOTION_MAX_AXES; ++l)
+        std::printf(" %c %.6f", letters[l], s.probedPos.v[l]);
     std::printf("\n");
     for (int j = 0; j < s.num_joints && j < MOTION_MAX_JOINTS; ++j) {
         const motion_joint_status& js = s.joint[j];

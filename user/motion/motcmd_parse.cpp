@@ -79,6 +79,16 @@ int on_off(const std::string& name, const std::string& s)
     throw ParseError{name + ": '" + s + "' is not 0/1/on/off"};
 }
 
+// the optional third word of dout/aout: "sync" or nothing
+bool sync_word(const std::string& name, const Args& a)
+{
+    if (a.size() < 3)
+        return false;
+    if (a[2] != "sync")
+        throw ParseError{name + ": '" + a[2] + "' is not 'sync'"};
+    return true;
+}
+
 struct Entry {
     const char* name;
     int command;     // 0: not a plain command (action)
@@ -242,19 +252,28 @@ const std::vector<Entry>& table()
              r.cmd.maxLimit = number("set-axis-limits", a[2]); }},
         {"set-axis-vel", MOTCMD_SET_AXIS_VEL_LIMIT, 2, 2, "AXIS VEL", [](const Args& a, MotcmdRequest& r) {
              r.cmd.axis = axis_arg("set-axis-vel", a[0]); r.cmd.value = number("set-axis-vel", a[1]); }},
+        {"set-axis-eoffset-limits", MOTCMD_SET_AXIS_EXT_OFFSET_LIMITS, 3, 3, "AXIS VEL ACC", [](const Args& a, MotcmdRequest& r) {
+             r.cmd.axis = axis_arg("set-axis-eoffset-limits", a[0]);
+             r.cmd.vel = number("set-axis-eoffset-limits", a[1]);
+             r.cmd.acc = number("set-axis-eoffset-limits", a[2]); }},
         {"set-axis-acc", MOTCMD_SET_AXIS_ACC_LIMIT, 2, 2, "AXIS ACC", [](const Args& a, MotcmdRequest& r) {
              r.cmd.axis = axis_arg("set-axis-acc", a[0]); r.cmd.value = number("set-axis-acc", a[1]); }},
-        {"dout", MOTCMD_SET_DOUT, 2, 3, "INDEX 0|1 [sync]", [](const Args& a, MotcmdRequest& r) {
+        // sync: with the next queued move's start, and END (if given) at its end
+        {"dout", MOTCMD_SET_DOUT, 2, 4, "INDEX 0|1 [sync [END]]", [](const Args& a, MotcmdRequest& r) {
              r.cmd.out = integer("dout", a[0]);
              r.cmd.start = r.cmd.end = on_off("dout", a[1]);
-             r.cmd.now = !(a.size() > 2 && a[2] == "sync");
-             if (a.size() > 2 && a[2] != "sync") throw ParseError{"dout: '" + a[2] + "' is not 'sync'"}; }},
-        {"aout", MOTCMD_SET_AOUT, 2, 3, "INDEX VALUE [sync]", [](const Args& a, MotcmdRequest& r) {
+             r.cmd.now = !sync_word("dout", a);
+             if (a.size() > 3) r.cmd.end = on_off("dout", a[3]); }},
+        {"aout", MOTCMD_SET_AOUT, 2, 4, "INDEX VALUE [sync [END]]", [](const Args& a, MotcmdRequest& r) {
              r.cmd.out = integer("aout", a[0]);
              r.cmd.aout_start = r.cmd.aout_end = number("aout", a[1]);
-             r.cmd.now = !(a.size() > 2 && a[2] == "sync");
-             if (a.size() > 2 && a[2] != "sync") throw ParseError{"aout: '" + a[2] + "' is not 'sync'"}; }},
-        {"spindle-on", MOTCMD_SPINDLE_ON, 1, 4, "RPM [SPINDLE [CSS_FACTOR XOFFSET]]", [](const Args& a, MotcmdRequest& r) {
+             r.cmd.now = !sync_word("aout", a);
+             if (a.size() > 3) r.cmd.aout_end = number("aout", a[3]); }},
+        {"spindle-on", MOTCMD_SPINDLE_ON, 1, 5, "RPM [SPINDLE [CSS_FACTOR XOFFSET]] [wait]", [](const Args& all, MotcmdRequest& r) {
+             // 'wait': the next feed move waits for spindle.S.at-speed
+             Args a = all;
+             if (a.size() > 1 && a.back() == "wait") { r.cmd.wait_for_at_speed = 1; a.pop_back(); }
+             if (a.size() > 4) throw ParseError{"spindle-on: '" + a[4] + "' is not 'wait'"};
              r.cmd.vel = number("spindle-on", a[0]);
              r.cmd.spindle = spindle_opt("spindle-on", a, 1);
              if (a.size() == 3) throw ParseError{"spindle-on: CSS_FACTOR needs XOFFSET"};

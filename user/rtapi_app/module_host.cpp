@@ -19,6 +19,7 @@
 #include "rtapi.h"
 #include "rtapi_app.h"
 #include "rtapi_modparam_uspace.h"
+#include "rtapi_symbol.h"
 
 static_assert(RTAPI_NAME_LEN == 31, "is_module_name() in module_args.cpp assumes 31");
 
@@ -143,7 +144,28 @@ struct ModuleHost::Loaded {
     std::vector<std::string> uses;  // loaded modules whose exports this one binds
 };
 
+namespace {
+// The host whose load() is running a module's rtapi_app_main, for rtapi_symbol_get
+// (called from there, in the daemon's command thread, like every load).
+ModuleHost* loading_host = nullptr;
+}  // namespace
+
 ModuleHost::ModuleHost(std::filesystem::path dir) : dir_(std::move(dir)) {}
+
+void* ModuleHost::symbol_get(const char* name)
+{
+    for (const auto& m : loaded_) {
+        void* addr = dlsym(m->handle.get(), name);
+        Dl_info info{};
+        // defined by that module itself, not by a library it links
+        if (!addr || !dladdr(addr, &info) || !info.dli_fname ||
+            std::filesystem::path(info.dli_fname).filename() != m->name + ".so")
+            continue;
+        loading_uses_.push_back(m->name);
+        return addr;
+    }
+    return nullptr;
+}
 
 ModuleHost::~ModuleHost()
 {
@@ -194,8 +216,13 @@ Result<void> ModuleHost::load(const std::string& name, const std::vector<ModuleA
 
     MessageCapture capture;
     hal_set_load_context(name.c_str(), joined->c_str());
+    loading_uses_.clear();
+    loading_host = this;
     int rc = main_fn();
+    loading_host = nullptr;
     hal_set_load_context(nullptr, nullptr);
+    // rtapi_symbol_get() lookups bind like linked references: those modules stay
+    uses.insert(uses.end(), loading_uses_.begin(), loading_uses_.end());
     std::vector<std::string> errors = capture.take();
     if (rc != 0) {
         hal_exit_module_comps(name.c_str());  // whatever init left behind
@@ -257,3 +284,13 @@ std::vector<std::string> ModuleHost::list() const
 }
 
 }  // namespace hal
+
+// rtapi.h: only a module's rtapi_app_main, run by ModuleHost::load, finds symbols.
+extern "C" void* rtapi_symbol_get(const char* name)
+{
+    return hal::loading_host && name ? hal::loading_host->symbol_get(name) : nullptr;
+}
+
+// The exporter stays until the caller's module is unloaded (its uses list goes with
+// it), so there is nothing to release early.
+extern "C" void rtapi_symbol_put(const char*) {}

@@ -38,12 +38,17 @@ public:
     std::vector<std::string> list() const;  // names in load order
     bool empty() const { return loaded_.empty(); }
 
+    // rtapi_symbol_get() for the module being loaded: NAME as a loaded module defines
+    // it; that module then counts as used by the new one (unloadrt refuses it).
+    void* symbol_get(const char* name);
+
 private:
     struct Loaded;
     void unload_one(Loaded& m);
 
     std::filesystem::path dir_;
     std::vector<std::unique_ptr<Loaded>> loaded_;  // load order
+    std::vector<std::string> loading_uses_;  // symbol_get()s of the module being loaded
 };
 
 }  // namespace hal

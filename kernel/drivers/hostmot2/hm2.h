@@ -18,13 +18,8 @@
 #include "hm2_config.h"
 #include "hm2_serial.h"
 
-/* the sub-driver API (hm2_serial.h) is exported from the files that define it;
- * rtapi_app.h, which defines EXPORT_SYMBOL, belongs to hm2_core.c alone */
-#if defined(__KERNEL__)
-#include <linux/export.h>
-#elif !defined(EXPORT_SYMBOL)
-#define EXPORT_SYMBOL(sym)
-#endif
+/* the sub-driver API (hm2_serial.h) is exported from the files that define it */
+#include "rtapi_export.h"
 
 #define HM2_ERRLEN 160
 /* orders a sub-driver's updates against the board's thread (both flavors) */

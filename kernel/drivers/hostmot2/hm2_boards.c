@@ -3,6 +3,7 @@
  * and 13 (IDs, parts, connectors, LEDs) and hm2-transports.md (7i43, Ethernet). */
 #include "rtapi.h"
 #include "rtapi_string.h"
+#include "rtapi_export.h"
 #include "hm2_boards.h"
 
 static const struct hm2_board_info boards[] = {
@@ -52,10 +53,7 @@ int hm2_board_fits(const struct hm2_board_info *b, const char *part)
 	return 0;
 }
 
-#ifdef __KERNEL__
-#include <linux/export.h>
 /* for the board drivers (hm2_sim, hm2_pci, ...), which load after hostmot2 */
 EXPORT_SYMBOL(hm2_board_find);
 EXPORT_SYMBOL(hm2_board_at);
 EXPORT_SYMBOL(hm2_board_fits);
-#endif

@@ -563,9 +563,11 @@ static int export_board(struct eth_board *b)
 	return rc;
 }
 
-static int setup_board(int k, const char *where, const char *cfg)
+/* board k: board_ip[k], config[k] */
+static int setup_board(int k)
 {
 	struct eth_board *b = &boards[k];
+	const char *where = board_ip[k], *cfg = config[k];
 	char ip[20], hal_name[17];
 	int port, same = 0, i, rc;
 
@@ -631,7 +633,7 @@ static void close_boards(void)
 
 int rtapi_app_main(void)
 {
-	int k, rc = 0;
+	int k;
 
 	for (num_boards = 0; num_boards < MAX_BOARDS && board_ip[num_boards] && *board_ip[num_boards];)
 		num_boards++;
@@ -656,15 +658,7 @@ int rtapi_app_main(void)
 	}
 	for (k = 0; k < num_boards; k++)
 		boards[k].sock = -1;
-	for (k = 0; k < num_boards && !rc; k++)
-		rc = setup_board(k, board_ip[k], config[k]);
-	if (rc) {
-		close_boards();
-		hal_exit(comp_id);
-		return rc;
-	}
-	hal_ready(comp_id);
-	return 0;
+	return hm2_llio_setup_boards(comp_id, num_boards, setup_board, close_boards);
 }
 
 void rtapi_app_exit(void)

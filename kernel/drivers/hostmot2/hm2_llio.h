@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: GPL-2.0-or-later */
 /* hm2_llio.h - the narrow interface between hostmot2 and a board driver ("low-level
- * I/O"). A board driver (hm2_sim now; hm2_pci, hm2_eth, hm2_7i43 later) fills one
- * struct hm2_llio per board and calls hm2_register(); the hostmot2 core is its only
- * user. The core knows no board, the board knows no function module.
+ * I/O"). A board driver (hm2_pci, hm2_eth, hm2_7i43, hm2_sim) fills one struct
+ * hm2_llio per board and calls hm2_register(); the hostmot2 core is its only user.
+ * The core knows no board, the board knows no function module.
  *
  * Addresses are byte addresses in the 64 KiB HostMot2 space; sizes are bytes and
  * always a multiple of 4 (whole little-endian 32-bit words). Every op returns 0 or
@@ -63,5 +63,24 @@ int hm2_register(struct hm2_llio *llio, const char *config);
 /* Make the board safe (the watchdog bites at once) and forget it; call before
  * hal_exit() of the board driver's component. */
 void hm2_unregister(struct hm2_llio *llio);
+
+/* The end of the rtapi_app_main() of a board driver with a board per module-parameter
+ * entry (hm2_7i43, hm2_eth, hm2_sim): set up boards 0..n-1 in order; on the first
+ * failure undo() releases every board set up so far and the component leaves HAL.
+ * 0 (the component is ready) or that failure's -errno. */
+static inline int hm2_llio_setup_boards(int comp_id, int n, int (*setup)(int k), void (*undo)(void))
+{
+	int k, rc = 0;
+
+	for (k = 0; k < n && !rc; k++)
+		rc = setup(k);
+	if (rc) {
+		undo();
+		hal_exit(comp_id);
+		return rc;
+	}
+	hal_ready(comp_id);
+	return 0;
+}
 
 #endif /* HM2_LLIO_H */

@@ -80,7 +80,7 @@ static void board_writel(void *dev, unsigned long off, rtapi_u32 v)
 	show_outputs(pt);
 }
 
-static const struct rtapi_pcisim_ops board_ops = { board_readl, board_writel };
+static const struct rtapi_pcisim_ops board_ops = { .readl = board_readl, .writel = board_writel };
 
 static int export_board(struct sim_board *b, int bn)
 {

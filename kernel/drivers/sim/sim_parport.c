@@ -15,7 +15,8 @@
  * data cycle reads or writes the register there and advances it. With board=B for
  * the port they reach a device on the cable instead: B = pluto_servo or pluto_step,
  * a Pluto-P board (sim_pluto.c) configured through the port and answering that
- * design's register map; B = none, nothing connected. A cycle nobody answers sets
+ * design's register map; B = 7i43 (400K FPGA) or 7i43_200 (200K), a Mesa 7i43
+ * (sim_7i43.c: its CPLD, and HostMot2 once configured); B = none, nothing connected. A cycle nobody answers sets
  * the EPP timeout flag, status bit 0, until a status write with bit 0 set clears it. */
 #include "rtapi.h"
 #include "rtapi_app.h"
@@ -23,6 +24,7 @@
 #include "rtapi_string.h"
 #include "hal.h"
 #include "sim_pluto.h"
+#include "sim_7i43.h"
 
 MODULE_LICENSE("GPL");
 MODULE_DESCRIPTION("simulated PC parallel port");
@@ -32,9 +34,9 @@ static int io[SIM_MAX];
 RTAPI_MP_ARRAY_INT(io, SIM_MAX, "base addresses of the simulated ports");
 static char *board[SIM_MAX];
 RTAPI_MP_ARRAY_STRING(board, SIM_MAX, "device on each port's cable: none, pluto_servo, "
-		      "pluto_step (default: an EPP register file)");
+		      "pluto_step, 7i43, 7i43_200 (default: an EPP register file)");
 
-enum cable { CABLE_REGFILE, CABLE_NONE, CABLE_PLUTO };
+enum cable { CABLE_REGFILE, CABLE_NONE, CABLE_PLUTO, CABLE_7I43 };
 
 static const int status_pin[5] = { 15, 13, 12, 10, 11 };	/* status bits 3..7 */
 static const int control_pin[4] = { 1, 14, 16, 17 };		/* control bits 0..3 */
@@ -49,6 +51,7 @@ struct sim_pp {			/* HAL memory; touched only by port accesses */
 	unsigned char epp_mem[256];
 	enum cable cable;
 	struct sim_pluto *pluto;	/* CABLE_PLUTO */
+	struct sim_7i43 *mesa;		/* CABLE_7I43 */
 	int epp_timeout;		/* status bit 0 */
 	int handle_lo, handle_hi;
 	char name[24];
@@ -102,6 +105,13 @@ static unsigned char lo_inb(void *dev, unsigned int off)
 		return (s->control_reg & 0xf0) | (b ^ 0x0b);
 	case 3:
 		++*s->epp_cycles;
+		if (s->cable == CABLE_7I43) {
+			if (sim_7i43_epp_addr_read(s->mesa, &b) < 0) {
+				s->epp_timeout = 1;
+				return 0xff;
+			}
+			return b;
+		}
 		if (s->cable != CABLE_REGFILE) {	/* address reads: unused by the Pluto */
 			s->epp_timeout = 1;
 			return 0xff;
@@ -111,7 +121,9 @@ static unsigned char lo_inb(void *dev, unsigned int off)
 		++*s->epp_cycles;
 		if (s->cable == CABLE_REGFILE)
 			return s->epp_mem[s->epp_addr++];
-		if (s->cable == CABLE_NONE || sim_pluto_epp_read(s->pluto, &b) < 0) {
+		if (s->cable == CABLE_NONE ||
+		    (s->cable == CABLE_PLUTO ? sim_pluto_epp_read(s->pluto, &b) :
+		     sim_7i43_epp_read(s->mesa, &b)) < 0) {
 			s->epp_timeout = 1;
 			return 0xff;
 		}
@@ -126,6 +138,8 @@ static void cable_write(struct sim_pp *s, int addr_cycle, unsigned char b)
 
 	if (s->cable == CABLE_PLUTO)
 		rc = addr_cycle ? sim_pluto_epp_addr(s->pluto, b) : sim_pluto_epp_write(s->pluto, b);
+	else if (s->cable == CABLE_7I43)
+		rc = addr_cycle ? sim_7i43_epp_addr(s->mesa, b) : sim_7i43_epp_write(s->mesa, b);
 	if (rc < 0)
 		s->epp_timeout = 1;
 }
@@ -167,6 +181,8 @@ static void lo_outb(void *dev, unsigned int off, unsigned char b)
 	update_levels(s);
 	if (s->cable == CABLE_PLUTO && off <= 2)
 		sim_pluto_spp(s->pluto, s->data_reg, s->control_reg);
+	if (s->cable == CABLE_7I43 && off == 2)
+		sim_7i43_spp(s->mesa, s->control_reg);
 }
 
 static unsigned char hi_inb(void *dev, unsigned int off)
@@ -229,6 +245,10 @@ static int export_sim(struct sim_pp *s, int n)
 					 SIM_PLUTO_STEP : SIM_PLUTO_SERVO);
 		err = s->pluto ? 0 : -ENOMEM;
 	}
+	if (!err && s->cable == CABLE_7I43) {
+		s->mesa = sim_7i43_new(comp_id, n, !strcmp(board[n], "7i43_200") ? 200 : 400);
+		err = s->mesa ? 0 : -ENOMEM;
+	}
 	if (err)
 		return err;
 	s->control_reg = 0x0c;	/* after power-up: nInit high, nSelectIn low */
@@ -268,9 +288,11 @@ int rtapi_app_main(void)
 			continue;
 		if (n >= num || (strcmp(board[n], "none") &&
 				 strcmp(board[n], "pluto_servo") &&
-				 strcmp(board[n], "pluto_step"))) {
+				 strcmp(board[n], "pluto_step") && strcmp(board[n], "7i43") &&
+				 strcmp(board[n], "7i43_200"))) {
 			rtapi_print_msg(RTAPI_MSG_ERR, "sim_parport: board=%s (entry %d): must be "
-					"none, pluto_servo or pluto_step, for a port given in io=\n",
+					"none, pluto_servo, pluto_step, 7i43 or 7i43_200, for a port "
+					"given in io=\n",
 					board[n], n + 1);
 			return -EINVAL;
 		}
@@ -292,8 +314,10 @@ int rtapi_app_main(void)
 
 		rtapi_snprintf(s->name, sizeof(s->name), "sim-parport.%d", n);
 		s->cable = !board[n] || !*board[n] ? CABLE_REGFILE :
-			   !strcmp(board[n], "none") ? CABLE_NONE : CABLE_PLUTO;
+			   !strcmp(board[n], "none") ? CABLE_NONE :
+			   !strncmp(board[n], "7i43", 4) ? CABLE_7I43 : CABLE_PLUTO;
 		s->pluto = 0;
+		s->mesa = 0;
 		s->epp_timeout = 0;
 		err = export_sim(s, n);
 		if (!err) {

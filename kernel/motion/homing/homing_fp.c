@@ -202,6 +202,42 @@ static int latch_state(int j)
 	return HOME_SET_SWITCH_POSITION;
 }
 
+/* A *_START state of a search move: once the pause is over, a move at vel toward the
+ * far end and state 'wait'; but first the switch must be closed (need 1) or open
+ * (need 0), else 'msg' and ABORT (need -1: no check). Returns "run the joint again". */
+static bool search_start(int j, long period_ns, double vel, int need, const char *msg, int wait)
+{
+	struct homing_priv *h = &homing_g.h[j];
+
+	if (!paused_enough(j, period_ns))
+		return false;
+	if (need >= 0 && h->home_sw != (need == 1)) {
+		homing_report("%s", msg);
+		h->state = HOME_ABORT;
+		return true;
+	}
+	start_search_move(j, vel);
+	h->state = wait;
+	return false;
+}
+
+/* A *_WAIT state of a search move: 'event' stops the move and ends the state in
+ * 'next', or for next = LATCH_EDGE in latch_state()'s (which keeps moving for an
+ * index); until then the move must not end or hit a limit (move_failed). */
+#define LATCH_EDGE (-1)
+static bool search_wait(int j, bool event, int next)
+{
+	if (!event)
+		return move_failed(j);
+	if (next == LATCH_EDGE) {
+		homing_g.h[j].state = latch_state(j);
+	} else {
+		stop_move(j);
+		homing_g.h[j].state = next;
+	}
+	return true;
+}
+
 static void set_index_position(int j)
 {
 	struct homing_priv *h = &homing_g.h[j];
@@ -262,34 +298,18 @@ static void home_one_joint(int j, long period_ns)
 			}
 			break;
 		case HOME_INITIAL_BACKOFF_START:
-			if (!paused_enough(j, period_ns))
-				break;
-			start_search_move(j, -h->search_vel);
-			h->state = HOME_INITIAL_BACKOFF_WAIT;
+			again = search_start(j, period_ns, -h->search_vel, -1, 0,
+					     HOME_INITIAL_BACKOFF_WAIT);
 			break;
 		case HOME_INITIAL_BACKOFF_WAIT:
-			if (!h->home_sw) {
-				stop_move(j);
-				h->state = HOME_INITIAL_SEARCH_START;
-				again = true;
-			} else {
-				again = move_failed(j);
-			}
+			again = search_wait(j, !h->home_sw, HOME_INITIAL_SEARCH_START);
 			break;
 		case HOME_INITIAL_SEARCH_START:
-			if (!paused_enough(j, period_ns))
-				break;
-			start_search_move(j, h->search_vel);
-			h->state = HOME_INITIAL_SEARCH_WAIT;
+			again = search_start(j, period_ns, h->search_vel, -1, 0,
+					     HOME_INITIAL_SEARCH_WAIT);
 			break;
 		case HOME_INITIAL_SEARCH_WAIT:
-			if (h->home_sw) {
-				stop_move(j);
-				h->state = HOME_SET_COARSE_POSITION;
-				again = true;
-			} else {
-				again = move_failed(j);
-			}
+			again = search_wait(j, h->home_sw, HOME_SET_COARSE_POSITION);
 			break;
 		case HOME_SET_COARSE_POSITION:
 			shift_position(j, h->home_offset - jt->pos_fb);
@@ -298,65 +318,28 @@ static void home_one_joint(int j, long period_ns)
 			again = true;
 			break;
 		case HOME_FINAL_BACKOFF_START:
-			if (!paused_enough(j, period_ns))
-				break;
-			if (!h->home_sw) {
-				homing_report("Home switch inactive before start of backoff move");
-				h->state = HOME_ABORT;
-				again = true;
-				break;
-			}
-			start_search_move(j, -h->search_vel);
-			h->state = HOME_FINAL_BACKOFF_WAIT;
+			again = search_start(j, period_ns, -h->search_vel, 1,
+					     "Home switch inactive before start of backoff move",
+					     HOME_FINAL_BACKOFF_WAIT);
 			break;
 		case HOME_FINAL_BACKOFF_WAIT:
-			if (!h->home_sw) {
-				stop_move(j);
-				h->state = HOME_RISE_SEARCH_START;
-				again = true;
-			} else {
-				again = move_failed(j);
-			}
+			again = search_wait(j, !h->home_sw, HOME_RISE_SEARCH_START);
 			break;
 		case HOME_RISE_SEARCH_START:
-			if (!paused_enough(j, period_ns))
-				break;
-			if (h->home_sw) {
-				homing_report("Home switch active before start of latch move");
-				h->state = HOME_ABORT;
-				again = true;
-				break;
-			}
-			start_search_move(j, h->latch_vel);
-			h->state = HOME_RISE_SEARCH_WAIT;
+			again = search_start(j, period_ns, h->latch_vel, 0,
+					     "Home switch active before start of latch move",
+					     HOME_RISE_SEARCH_WAIT);
 			break;
 		case HOME_RISE_SEARCH_WAIT:
-			if (h->home_sw) {
-				h->state = latch_state(j);
-				again = true;
-			} else {
-				again = move_failed(j);
-			}
+			again = search_wait(j, h->home_sw, LATCH_EDGE);
 			break;
 		case HOME_FALL_SEARCH_START:
-			if (!paused_enough(j, period_ns))
-				break;
-			if (!h->home_sw) {
-				homing_report("Home switch inactive before start of latch move");
-				h->state = HOME_ABORT;
-				again = true;
-				break;
-			}
-			start_search_move(j, h->latch_vel);
-			h->state = HOME_FALL_SEARCH_WAIT;
+			again = search_start(j, period_ns, h->latch_vel, 1,
+					     "Home switch inactive before start of latch move",
+					     HOME_FALL_SEARCH_WAIT);
 			break;
 		case HOME_FALL_SEARCH_WAIT:
-			if (!h->home_sw) {
-				h->state = latch_state(j);
-				again = true;
-			} else {
-				again = move_failed(j);
-			}
+			again = search_wait(j, !h->home_sw, LATCH_EDGE);
 			break;
 		case HOME_SET_SWITCH_POSITION:
 			/* an absolute encoder already reads the position: HOME_OFFSET is added */
@@ -379,13 +362,7 @@ static void home_one_joint(int j, long period_ns)
 			h->state = HOME_INDEX_SEARCH_WAIT;
 			break;
 		case HOME_INDEX_SEARCH_WAIT:
-			if (!h->index_enable) {
-				stop_move(j);
-				h->state = HOME_SET_INDEX_POSITION;
-				again = true;
-			} else {
-				again = move_failed(j);
-			}
+			again = search_wait(j, !h->index_enable, HOME_SET_INDEX_POSITION);
 			break;
 		case HOME_SET_INDEX_POSITION:
 			set_index_position(j);

@@ -106,10 +106,13 @@ struct tp_inputs {
 	int probe_input;		/* motion.probe-input */
 };
 
-/* Synchronized analog output change. */
+/* Synchronized analog output change (value at the segment start; end: the value at
+ * its end, used when has_end). */
 struct tp_aout {
 	int index;
 	double value;
+	int has_end;
+	double end;
 };
 
 /* Outputs of one planner cycle. */
@@ -129,7 +132,8 @@ struct tp_outputs {
 	int active_depth;		/* segments currently moving (1, 2 while blending) */
 	int queue_full;
 	int paused;			/* pause requested and motion stopped */
-	/* Synchronized outputs to apply this period (at segment start). */
+	/* Synchronized outputs to apply this period (a segment's start values, or the end
+	 * values of one that ended; a segment starting in the same period comes after). */
 	rtapi_u64 dout_mask;		/* bit i set: motion.digital-out-i := bit i of dout_value */
 	rtapi_u64 dout_value;
 	int aout_count;
@@ -173,9 +177,11 @@ int tp_set_arc_blend(struct tp *tp, int enable, int fallback_enable, int opt_dep
 int tp_set_pos(struct tp *tp, const struct tp_pose *pos);
 int tp_get_pos(const struct tp *tp, struct tp_pose *pos);
 
-/* Synchronized outputs for the start of the next queued segment (M62-M67). */
-int tp_set_dout(struct tp *tp, int index, int start_value);
-int tp_set_aout(struct tp *tp, int index, double start_value);
+/* Synchronized outputs of the next queued segment (M62-M67, motion.md 7.1 SET_DOUT/
+ * SET_AOUT): start_value when it starts moving and, if end_value differs, end_value
+ * when it reaches its end (an aborted segment does not reach it). */
+int tp_set_dout(struct tp *tp, int index, int start_value, int end_value);
+int tp_set_aout(struct tp *tp, int index, double start_value, double end_value);
 /* G33/G95/G33.1 for following segments: units per spindle rev, 0 = off;
  * velocity_mode != 0: feed per rev (G95), else position sync (G33). */
 int tp_set_spindle_sync(struct tp *tp, int spindle_num, double units_per_rev, int velocity_mode);
@@ -208,6 +214,9 @@ int tp_active_depth(const struct tp *tp);
 int tp_is_queue_full(const struct tp *tp);
 int tp_is_paused(const struct tp *tp);
 int tp_exec_id(const struct tp *tp);
+/* The n-th queued segment (0 = executing): progress along it, current path speed and
+ * its acceleration bound. TP_ERR_INVALID when fewer than n + 1 are queued. */
+int tp_segment_info(const struct tp *tp, int n, double *progress, double *vel, double *acc);
 
 #ifdef __cplusplus
 }

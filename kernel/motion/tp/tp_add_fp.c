@@ -81,6 +81,8 @@ static void tc_fill(struct tp *tp, struct tc *tc, const struct tp_move *mv)
 	tc->uu_per_rev = tp->uu_per_rev;
 	tc->dout_mask = tp->dout_mask;
 	tc->dout_value = tp->dout_value;
+	tc->dout_end_mask = tp->dout_end_mask;
+	tc->dout_end_value = tp->dout_end_value;
 	tc->aout_count = tp->aout_count;
 	for (int i = 0; i < tp->aout_count; i++)
 		tc->aout[i] = tp->aout[i];
@@ -100,6 +102,8 @@ static void pending_outputs_taken(struct tp *tp)
 {
 	tp->dout_mask = 0;
 	tp->dout_value = 0;
+	tp->dout_end_mask = 0;
+	tp->dout_end_value = 0;
 	tp->aout_count = 0;
 }
 

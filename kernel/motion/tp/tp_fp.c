@@ -169,33 +169,43 @@ int tp_get_pos(const struct tp *tp, struct tp_pose *pos)
 	return 0;
 }
 
-int tp_set_dout(struct tp *tp, int index, int start_value)
+static rtapi_u64 set_bit(rtapi_u64 word, rtapi_u64 bit, int on)
+{
+	return on ? word | bit : word & ~bit;
+}
+
+int tp_set_dout(struct tp *tp, int index, int start_value, int end_value)
 {
 	if (index < 0 || index >= TP_MAX_DIO)
 		return TP_ERR_INVALID;
 	rtapi_u64 bit = (rtapi_u64)1 << index;
 	tp->dout_mask |= bit;
-	if (start_value)
-		tp->dout_value |= bit;
-	else
-		tp->dout_value &= ~bit;
+	tp->dout_value = set_bit(tp->dout_value, bit, start_value);
+	/* only a change at the end is applied there: an immediate change made while the
+	 * segment runs is not undone by repeating the start value */
+	tp->dout_end_mask = set_bit(tp->dout_end_mask, bit, !start_value != !end_value);
+	tp->dout_end_value = set_bit(tp->dout_end_value, bit, end_value);
 	return 0;
 }
 
-int tp_set_aout(struct tp *tp, int index, double start_value)
+int tp_set_aout(struct tp *tp, int index, double start_value, double end_value)
 {
-	if (index < 0 || index >= TP_MAX_AIO || bad(start_value))
+	int i;
+
+	if (index < 0 || index >= TP_MAX_AIO || bad(start_value) || bad(end_value))
 		return TP_ERR_INVALID;
-	for (int i = 0; i < tp->aout_count; i++)
-		if (tp->aout[i].index == index) {
-			tp->aout[i].value = start_value;
-			return 0;
-		}
-	if (tp->aout_count >= TP_SEG_AIO_MAX)
-		return TP_ERR_INVALID;
-	tp->aout[tp->aout_count].index = index;
-	tp->aout[tp->aout_count].value = start_value;
-	tp->aout_count++;
+	for (i = 0; i < tp->aout_count; i++)
+		if (tp->aout[i].index == index)
+			break;
+	if (i == tp->aout_count) {
+		if (tp->aout_count >= TP_SEG_AIO_MAX)
+			return TP_ERR_INVALID;
+		tp->aout_count++;
+	}
+	tp->aout[i].index = index;
+	tp->aout[i].value = start_value;
+	tp->aout[i].has_end = end_value != start_value;
+	tp->aout[i].end = end_value;
 	return 0;
 }
 
@@ -299,4 +309,17 @@ int tp_is_paused(const struct tp *tp)
 int tp_exec_id(const struct tp *tp)
 {
 	return tp->exec_id;
+}
+
+int tp_segment_info(const struct tp *tp, int n, double *progress, double *vel, double *acc)
+{
+	const struct tc *tc;
+
+	if (n < 0 || n >= tp->count)
+		return TP_ERR_INVALID;
+	tc = tp_seg_c(tp, n);
+	*progress = tc->progress;
+	*vel = tc->vel;
+	*acc = tc->acc;
+	return 0;
 }

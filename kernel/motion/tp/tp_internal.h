@@ -63,8 +63,8 @@ struct tc {
 	double tap_scale;		/* reversal scale */
 	double tap_revs_prev;
 	double tap_x0;			/* final placement starts here */
-	/* synchronized outputs at segment start */
-	rtapi_u64 dout_mask, dout_value;
+	/* synchronized outputs at segment start, and the changed ones at its end */
+	rtapi_u64 dout_mask, dout_value, dout_end_mask, dout_end_value;
 	int aout_count;
 	struct tp_aout aout[TP_SEG_AIO_MAX];
 	/* run time */
@@ -93,7 +93,7 @@ struct tp {
 	int last_motion_type;		/* of the last queued segment, for junction rules */
 	int last_sync;
 	/* pending for the next segment */
-	rtapi_u64 dout_mask, dout_value;
+	rtapi_u64 dout_mask, dout_value, dout_end_mask, dout_end_value;
 	int aout_count;
 	struct tp_aout aout[TP_SEG_AIO_MAX];
 	int sync_mode, spindle_num;

@@ -41,14 +41,19 @@ static double target_vel(const struct tp *tp, const struct tc *tc, const struct 
 	return dmin(req * scale, vmax);
 }
 
-/* Synchronized outputs and identity of a segment that starts moving now. */
-static void activate(struct tp *tp, struct tc *tc, struct tp_outputs *out)
+/* Adds a segment's synchronized outputs to this period's: its start values, or
+ * (at_end) the ones that change at its end. Later calls override earlier ones. */
+static void emit_outputs(const struct tc *tc, struct tp_outputs *out, int at_end)
 {
-	tc->active = 1;
-	out->dout_mask |= tc->dout_mask;
-	out->dout_value = (out->dout_value & ~tc->dout_mask) | (tc->dout_value & tc->dout_mask);
+	rtapi_u64 mask = at_end ? tc->dout_end_mask : tc->dout_mask;
+	rtapi_u64 value = at_end ? tc->dout_end_value : tc->dout_value;
+
+	out->dout_mask |= mask;
+	out->dout_value = (out->dout_value & ~mask) | (value & mask);
 	for (int i = 0; i < tc->aout_count; i++) {
 		int j;
+		if (at_end && !tc->aout[i].has_end)
+			continue;
 		for (j = 0; j < out->aout_count; j++)
 			if (out->aout[j].index == tc->aout[i].index)
 				break;
@@ -58,7 +63,16 @@ static void activate(struct tp *tp, struct tc *tc, struct tp_outputs *out)
 			out->aout_count++;
 		}
 		out->aout[j] = tc->aout[i];
+		if (at_end)
+			out->aout[j].value = tc->aout[i].end;
 	}
+}
+
+/* Synchronized outputs and identity of a segment that starts moving now. */
+static void activate(struct tp *tp, struct tc *tc, struct tp_outputs *out)
+{
+	tc->active = 1;
+	emit_outputs(tc, out, 0);
 	if (tp->stepping && !tp->step_armed)
 		tp->step_armed = 1;
 }
@@ -407,6 +421,7 @@ int tp_run_cycle(struct tp *tp, const struct tp_inputs *in, struct tp_outputs *o
 		if (!finished)
 			break;
 		/* the head reached its end */
+		emit_outputs(h, out, 1);
 		if (h->motion_type == TP_MOTION_PROBING && !out->probe_tripped) {
 			out->probe_no_contact = 1;
 			vec_to_pose(h->end, &out->probed_pos);

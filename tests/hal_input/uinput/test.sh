@@ -4,23 +4,7 @@
 # second reader of the device gets the events, and none while hal_input holds it with
 # '+' (EVIOCGRAB); the device unplugged is reported, its keys read released, and the
 # same device plugged again is taken up; the HAL's memory is returned at the end.
-T=${TEST_TMPDIR:-/tmp}
-# (up to 15 s by the clock: each halcmd takes a while in qemu)
-wait_for() {   # FILE PATTERN
-	end=$(($(date +%s) + 15))
-	while ! grep -q "$2" "$1" 2>/dev/null; do
-		[ "$(date +%s)" -gt $end ] && { echo "timed out waiting for '$2' in $1"; cat "$1"; return 1; }
-		sleep 0.05
-	done
-}
-wait_pin() {   # NAME VALUE
-	end=$(($(date +%s) + 15))
-	while [ "$(halcmd getp "$1")" != "$2" ]; do
-		[ "$(date +%s)" -gt $end ] && { echo "timed out waiting for $1 = $2 (is $(halcmd getp "$1"))"; return 1; }
-		sleep 0.05
-	done
-}
-memory() { halcmd status | grep -E 'used|active'; }
+. ../../helpers/testdev.sh
 # second_reader: the number of events another reader of the device got while the
 # test sends a button press and release and hal_input takes them up
 second_reader() {
@@ -35,12 +19,7 @@ second_reader() {
 	wait $r
 	cat "$T/reader.out" | grep events
 }
-rm -f "$T/ctl"; mkfifo "$T/ctl"
-hal_testdev uinput "hal-test pendant" <"$T/ctl" >"$T/dev.out" 2>&1 &
-dev=$!
-exec 3>"$T/ctl"
-wait_for "$T/dev.out" ready || exit 1
-node=$(sed -n 's/^ready //p' "$T/dev.out")
+testdev_start uinput "hal-test pendant"
 halcmd loadrt threads name1=t period1=1000000    # keeps the session between commands
 before=$(memory)
 halcmd loadusr -Wn hal_input sh -c "exec hal_input 'hal-test pendant' 2>$T/input.err"
@@ -89,7 +68,7 @@ wait_pin input.0.btn-2 TRUE && echo "btn-2 follows the new device"
 halcmd unloadusr hal_input
 echo "unloadusr: $?"
 echo quit >&3
-wait $dev
+wait $TESTDEV_PID
 halcmd -s show pin input.0 | wc -l
 [ "$before" = "$(memory)" ] && echo "memory returned" || { echo "memory differs:"; echo "$before"; memory; }
 halrun -U

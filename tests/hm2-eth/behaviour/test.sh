@@ -12,26 +12,14 @@ show() {
 	     "ddr $(halcmd getp hm2_5i25.0.raw.read_data)" \
 	     "io_error $(halcmd getp hm2_5i25.0.io_error)"
 }
-halcmd loadrt threads name1=thread period1=2000000
-halcmd loadrt hostmot2
-halcmd loadrt hm2_eth board_ip=127.0.0.1:$ETH_SIM_PORT 'config="enable_raw"'
-halcmd setp hm2_5i25.0.packet-read-timeout 100000000
+eth_load 100000000 300000000 enable_raw
 halcmd setp hm2_5i25.0.raw.read_address 0x1100
-halcmd setp hm2_5i25.0.watchdog.timeout_ns 300000000
 halcmd setp hm2_5i25.0.gpio.017.is_output TRUE
-halcmd setp hm2_5i25.0.stepgen.00.position-scale 100
-halcmd setp hm2_5i25.0.stepgen.00.maxvel 20
-halcmd setp hm2_5i25.0.stepgen.00.maxaccel 200
-halcmd setp hm2_5i25.0.stepgen.00.position-cmd 1.5
-halcmd setp hm2_5i25.0.stepgen.00.enable TRUE
-halcmd addf hm2_5i25.0.read-request thread
-halcmd addf hm2_5i25.0.read thread
-halcmd addf hm2_5i25.0.write thread
+eth_stepgen_cmd 1.5
 halcmd start
 sleep 1.5
 show running
-echo "position-fb $(halcmd getp hm2_5i25.0.stepgen.00.position-fb)" |
-	awk '{ d = $2 - 1.5; if (d < 0) d = -d; print $1, (d <= 0.01 ? "within one step of 1.5" : $2) }'
+eth_stepgen_settled 1.5
 halcmd delf hm2_5i25.0.write thread
 sleep 1
 show "write stopped"

@@ -12,14 +12,7 @@ show() {
 	     "exceeded $(halcmd getp hm2_5i25.0.packet-error-exceeded)" \
 	     "has_bit $(halcmd getp hm2_5i25.0.watchdog.has_bit)"
 }
-halcmd loadrt threads name1=thread period1=2000000
-halcmd loadrt hostmot2
-halcmd loadrt hm2_eth board_ip=127.0.0.1:$ETH_SIM_PORT
-halcmd setp hm2_5i25.0.packet-read-timeout 50000000
-halcmd setp hm2_5i25.0.watchdog.timeout_ns 3000000000
-halcmd addf hm2_5i25.0.read-request thread
-halcmd addf hm2_5i25.0.read thread
-halcmd addf hm2_5i25.0.write thread
+eth_load 50000000 3000000000
 halcmd start
 sleep 0.3
 show running

@@ -10,19 +10,8 @@
 . ../../helpers/hm2-eth-sim.sh
 set -e
 eth_sim_start --board 5i25 --drop-reads 10 --drop-writes 7 --loss-paused
-halcmd loadrt threads name1=thread period1=2000000
-halcmd loadrt hostmot2
-halcmd loadrt hm2_eth board_ip=127.0.0.1:$ETH_SIM_PORT
-halcmd setp hm2_5i25.0.packet-read-timeout 50000000
-halcmd setp hm2_5i25.0.watchdog.timeout_ns 300000000
-halcmd setp hm2_5i25.0.stepgen.00.position-scale 100
-halcmd setp hm2_5i25.0.stepgen.00.maxvel 20
-halcmd setp hm2_5i25.0.stepgen.00.maxaccel 200
-halcmd setp hm2_5i25.0.stepgen.00.position-cmd 1.5
-halcmd setp hm2_5i25.0.stepgen.00.enable TRUE
-halcmd addf hm2_5i25.0.read-request thread
-halcmd addf hm2_5i25.0.read thread
-halcmd addf hm2_5i25.0.write thread
+eth_load 50000000 300000000
+eth_stepgen_cmd 1.5
 halcmd start
 sleep 0.2
 kill -USR2 "$ETH_SIM_PID"	# losses from now on (registration is not retried)
@@ -33,7 +22,6 @@ echo "io_error $(halcmd getp hm2_5i25.0.io_error) exceeded $(halcmd getp hm2_5i2
      "level below limit: $([ "$(halcmd getp hm2_5i25.0.packet-error-level)" -lt 10 ] && echo yes || echo no)"
 kill -USR2 "$ETH_SIM_PID"	# losses end: the stepgen settles (recovered)
 sleep 1
-echo "position-fb $(halcmd getp hm2_5i25.0.stepgen.00.position-fb)" |
-	awk '{ d = $2 - 1.5; if (d < 0) d = -d; print $1, (d <= 0.01 ? "within one step of 1.5" : $2) }'
+eth_stepgen_settled 1.5
 halrun -U
 eth_sim_stop

@@ -3,17 +3,13 @@
 # same components and the same HAL memory use as before. mesa_7i65 is unloaded after
 # its board (its channel is gone by then), mesa_uart before.
 set -e
-tmp=${TEST_TMPDIR:-$(mktemp -d)}
+. ../../helpers/hal-cycles.sh
 halcmd loadrt threads name1=thread period1=1000000
-before=$(halcmd status | grep "used/total")
-i=0
-: > "$tmp/cycles.hal"
 # 100 cycles; 25 in the kernel flavor, where the test VM (qemu without KVM) needs
 # about a second per insmod/rmmod cycle and the runner allows 120 s a test
 cycles=100
 [ "${HAL_TEST_FLAVOR:-sim}" != kernel ] || cycles=25
-while [ $i -lt $cycles ]; do
-	cat >> "$tmp/cycles.hal" <<'CYCLE'
+hal_cycles $cycles <<'CYCLE'
 loadrt hostmot2
 loadrt hm2_sim board=5i25,5i20,5i23 config="enable_raw,num_encoders=4,num_encoders=2"
 loadrt mesa_7i65 bspi_chans=hm2_5i23.0.bspi.0
@@ -27,11 +23,4 @@ unloadrt hm2_sim
 unloadrt mesa_7i65
 unloadrt hostmot2
 CYCLE
-	i=$((i + 1))
-done
-halcmd -f "$tmp/cycles.hal"
-after=$(halcmd status | grep "used/total")
-echo "components: $(halcmd list comp)"
-echo "functions: $(halcmd list funct)"
-[ "$before" = "$after" ] && echo "memory: unchanged" || echo "memory: $before -> $after"
 halrun -U

@@ -19,6 +19,10 @@ echo "status $?"
 motcmd --bogus
 echo "status $?"
 # a writer that holds the channel (claimed by its first command) while it waits
+motcmd raw 5	# REVERSE: no reverse run
+echo "reverse status $?"
+motcmd raw 6	# FORWARD
+echo "forward status $?"
 printf 'free\nwait-state coord 3\n' >"$T/hold.cmd"
 motcmd -f "$T/hold.cmd" >/dev/null &
 holder=$!

@@ -5,34 +5,13 @@
 # (the first report sets the reference; 255 -> 0 counts +1) and the spring wheel reach
 # the pins; the device unplugged is reported and the pins keep their values; the HAL's
 # memory is returned at the end.
-T=${TEST_TMPDIR:-/tmp}
-# (up to 15 s by the clock: each halcmd takes a while in qemu)
-wait_for() {   # FILE PATTERN
-	end=$(($(date +%s) + 15))
-	while ! grep -q "$2" "$1" 2>/dev/null; do
-		[ "$(date +%s)" -gt $end ] && { echo "timed out waiting for '$2' in $1"; cat "$1"; return 1; }
-		sleep 0.05
-	done
-}
-wait_pin() {   # NAME VALUE
-	end=$(($(date +%s) + 15))
-	while [ "$(halcmd getp "$1")" != "$2" ]; do
-		[ "$(date +%s)" -gt $end ] && { echo "timed out waiting for $1 = $2 (is $(halcmd getp "$1"))"; return 1; }
-		sleep 0.05
-	done
-}
-memory() { halcmd status | grep -E 'used|active'; }
+. ../../helpers/testdev.sh
 pins() {
 	printf 'buttons'
 	for b in 0 1 2 3 4; do printf ' %s' "$(halcmd getp shuttlexpress.0.button-$b)"; done
 	echo " counts $(halcmd getp shuttlexpress.0.counts) spring $(halcmd getp shuttlexpress.0.spring-wheel-s32) $(halcmd getp shuttlexpress.0.spring-wheel-f)"
 }
-rm -f "$T/ctl"; mkfifo "$T/ctl"
-hal_testdev uhid <"$T/ctl" >"$T/dev.out" 2>&1 &
-dev=$!
-exec 3>"$T/ctl"
-wait_for "$T/dev.out" ready || exit 1
-node=$(sed -n 's/^ready //p' "$T/dev.out")
+testdev_start uhid
 halcmd loadrt threads name1=t period1=1000000    # keeps the session between commands
 before=$(memory)
 # probing every /dev/hidraw*: ours is the only ShuttleXpress
@@ -68,6 +47,6 @@ halcmd unloadusr shuttlexpress
 echo "unloadusr: $?"
 [ "$before" = "$(memory)" ] && echo "memory returned" || { echo "memory differs:"; echo "$before"; memory; }
 echo quit >&3
-wait $dev
+wait $TESTDEV_PID
 halrun -U
 echo "halrun -U: $?"

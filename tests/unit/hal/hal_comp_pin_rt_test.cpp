@@ -139,7 +139,7 @@ TEST_F(HalRt, MallocRefusesZeroNegativeAndHugeSizes)
     MsgCapture msgs;
     EXPECT_EQ(hal_malloc(0), nullptr);
     EXPECT_EQ(hal_malloc(-5), nullptr);
-    EXPECT_EQ(hal_malloc(static_cast<long>(HAL_SEGMENT_SIZE)), nullptr);
+    EXPECT_EQ(hal_malloc(static_cast<long>(HAL_SEGMENT_SIZE_DEFAULT)), nullptr);
     EXPECT_THAT(msgs.text(), HasSubstr("hal_malloc: bad size"));
 }
 
@@ -147,7 +147,7 @@ TEST_F(HalRt, MallocReportsAFullSegment)
 {
     MsgCapture msgs;
     rtapi_u32 used = hal_seg->bytes_used;
-    EXPECT_EQ(hal_malloc(static_cast<long>(HAL_SEGMENT_SIZE) - 1), nullptr);
+    EXPECT_EQ(hal_malloc(static_cast<long>(HAL_SEGMENT_SIZE_DEFAULT) - 1), nullptr);
     EXPECT_THAT(msgs.text(), HasSubstr("hal_malloc: HAL shared memory is full"));
     EXPECT_EQ(hal_seg->bytes_used, used);
 }

@@ -17,7 +17,7 @@ namespace {
 
 using ::testing::HasSubstr;
 
-constexpr rtapi_u32 kSegSize = 1u << 20;
+constexpr rtapi_u32 kSegSize = 4u << 20;   // the name index alone is 1 MiB
 
 std::set<int>& dead_pids()
 {

@@ -365,7 +365,7 @@ TEST_F(HalUl, MemoryUsageGrowsWithObjectsAndShrinksWhenTheyGo)
 {
     unsigned long used0, total;
     ASSERT_EQ(hal_memory_usage(&used0, &total), 0);
-    EXPECT_EQ(total, HAL_SEGMENT_SIZE);
+    EXPECT_EQ(total, HAL_SEGMENT_SIZE_DEFAULT);
     EXPECT_GT(used0, 0u);
     EXPECT_LT(used0, total);
     int id = hal_init("ul.more");

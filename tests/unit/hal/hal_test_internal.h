@@ -20,6 +20,7 @@ extern struct hal_seg_hdr *hal_seg;
 extern int hal_local_users;
 
 void hal_segment_init(struct hal_seg_hdr *seg, rtapi_u32 size);
+int hal_segment_size_wanted(rtapi_u32 *size);
 void *hal_alloc_block(struct hal_seg_hdr *seg, rtapi_u32 size, enum hal_kind kind, rtapi_u32 owner_off);
 void hal_free_block(struct hal_seg_hdr *seg, void *data);
 void hal_free_owned(struct hal_seg_hdr *seg, rtapi_u32 owner_off);

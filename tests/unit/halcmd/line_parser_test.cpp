@@ -125,7 +125,7 @@ TEST(Tokenize, BadParenthesisedVariable)
 
 TEST(Tokenize, InifileVariables)
 {
-    IniFile ini = IniFile::parse("[AXIS_0]\nSCALE = 2000\n# comment\n; other\n[EMCMOT]\nSERVO_PERIOD=1000000\n",
+    IniFile ini = *IniFile::parse("[AXIS_0]\nSCALE = 2000\n# comment\n; other\n[EMCMOT]\nSERVO_PERIOD=1000000\n",
                                  "m.ini");
     auto s = env_of({}, &ini);
     EXPECT_EQ(words("setp stepgen.0.scale [AXIS_0]SCALE", s), (V{"setp", "stepgen.0.scale", "2000"}));
@@ -134,7 +134,7 @@ TEST(Tokenize, InifileVariables)
 
 TEST(Tokenize, UnknownInifileVariableIsNamed)
 {
-    IniFile ini = IniFile::parse("[A]\nB=1\n", "m.ini");
+    IniFile ini = *IniFile::parse("[A]\nB=1\n", "m.ini");
     auto s = env_of({}, &ini);
     EXPECT_EQ(error_of("echo [A]C", s), "inifile variable [A]C not found in 'm.ini'");
     EXPECT_EQ(error_of("echo [X](B)", s), "inifile variable [X]B not found in 'm.ini'");
@@ -147,17 +147,17 @@ TEST(Tokenize, BracketsWithoutInifileAreLiteral)
 
 TEST(Tokenize, BracketsNotOfTheFormAreLiteral)
 {
-    IniFile ini = IniFile::parse("", "m.ini");
+    IniFile ini = *IniFile::parse("", "m.ini");
     auto s = env_of({}, &ini);
     EXPECT_EQ(words("echo [a b] [] [x]", s), (V{"echo", "[a", "b]", "[]", "[x]"}));
 }
 
 TEST(IniFile, FirstDefinitionWinsAndValuesAreTrimmed)
 {
-    IniFile ini = IniFile::parse("[S]\n K =  v 1 \nK=v2\n", "x.ini");
-    EXPECT_EQ(ini.get("S", "K"), "v 1");
-    EXPECT_FALSE(ini.get("S", "X"));
-    EXPECT_FALSE(ini.get("T", "K"));
+    IniFile ini = *IniFile::parse("[S]\n K =  v 1 \nK=v2\n", "x.ini");
+    EXPECT_EQ(ini.find("S", "K"), "v 1");
+    EXPECT_FALSE(ini.find("S", "X"));
+    EXPECT_FALSE(ini.find("T", "K"));
 }
 
 TEST(IniFile, MissingFileIsAnError)

@@ -11,6 +11,7 @@ extern "C" {
 #include "hm2_boards.h"
 #include "hm2_sim_fpgacfg.h"
 }
+#include "sim_bitstream.h"
 
 namespace {
 
@@ -26,17 +27,6 @@ void strChunk(Bytes &f, char tag, const std::string &s)
 	f.push_back((unsigned char)n);
 	f.insert(f.end(), s.begin(), s.end());
 	f.push_back(0);
-}
-
-// A Spartan-style bitstream: dummy words, sync, some frame data, DESYNC.
-Bytes bitstream(size_t payload = 64)
-{
-	Bytes b = {0xFF, 0xFF, 0xFF, 0xFF, 0xAA, 0x99, 0x55, 0x66};
-	for (size_t i = 0; i < payload; i++)
-		b.push_back((unsigned char)(i * 37 + 11));
-	for (unsigned char c : Bytes{0x30, 0x00, 0x80, 0x01, 0x00, 0x00, 0x00, 0x0D})
-		b.push_back(c);
-	return b;
 }
 
 Bytes bitfile(const std::string &part = "2s200pq208", const Bytes &stream = bitstream())

@@ -46,11 +46,11 @@ TEST(InterpModal, UnknownAndOutOfRangeCodes)
 	expect_error("G100", "G-code out of range");
 	expect_error("G-1", "Negative g code used");
 	expect_error("G12", "Unknown g code used");
-	expect_error("G5 X1 Y1 I1 J1 P1 Q1", "Unknown g code used");   // splines: not in this dialect
+	expect_error("G5.4 X1", "Unknown g code used");
 	expect_error("M20", "Unknown m code used: M20");
 	expect_error("M200", "M-code greater than 199: M200");
 	expect_error("M-1", "Negative m code used");
-	expect_error("M98 P1", "Unknown m code used: M98");
+	expect_error("M97 P1", "Unknown m code used: M97");
 }
 
 // gcode.md 3: comment, G96, G93-95, F, S, T, M I/O, M6, spindle, coolant, overrides,

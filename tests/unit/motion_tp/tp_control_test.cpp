@@ -172,8 +172,8 @@ TEST(TpSyncIo, DoutAndAoutChangeAtSegmentStart)
 {
 	TpSim s;
 	s.line(5, 0, 0, 50, 1);
-	ASSERT_EQ(tp_set_dout(s.tp, 3, 1), 0);
-	ASSERT_EQ(tp_set_aout(s.tp, 2, 4.5), 0);
+	ASSERT_EQ(tp_set_dout(s.tp, 3, 1, 1), 0);
+	ASSERT_EQ(tp_set_aout(s.tp, 2, 4.5, 4.5), 0);
 	s.line(5, 5, 0, 50, 2);
 	s.run();
 	int at = -1;
@@ -194,4 +194,46 @@ TEST(TpSyncIo, DoutAndAoutChangeAtSegmentStart)
 	EXPECT_DOUBLE_EQ(s.trace[at][0], 5);	// trace[at] = position after cycle at-1
 	EXPECT_DOUBLE_EQ(s.trace[at][1], 0);
 	EXPECT_GT(s.trace[at + 1][1], 0);	// and the second segment moves in the same cycle
+}
+
+// SET_DOUT/SET_AOUT with an end value that differs: the start value when the segment
+// starts moving, the end value in the period it reaches its end (a next segment's
+// start values in that period would come after); an unchanged end is not emitted.
+TEST(TpSyncIo, EndValuesAtSegmentEnd)
+{
+	TpSim s;
+	s.line(5, 0, 0, 50, 1);
+	ASSERT_EQ(tp_set_dout(s.tp, 1, 1, 0), 0);	// on for the segment, off after it
+	ASSERT_EQ(tp_set_dout(s.tp, 2, 1, 1), 0);	// on, nothing at the end
+	ASSERT_EQ(tp_set_aout(s.tp, 0, 2.5, -1.0), 0);
+	s.line(5, 5, 0, 50, 2);
+	s.line(0, 5, 0, 50, 3);
+	s.run();
+	int start = -1, end = -1;
+	for (size_t k = 0; k < s.outs.size(); k++) {
+		const tp_outputs& o = s.outs[k];
+		if (!o.dout_mask)
+			continue;
+		if (start < 0) {
+			start = (int)k;
+			EXPECT_EQ(o.dout_mask, (1ull << 1) | (1ull << 2));
+			EXPECT_EQ(o.dout_value, (1ull << 1) | (1ull << 2));
+			ASSERT_EQ(o.aout_count, 1);
+			EXPECT_DOUBLE_EQ(o.aout[0].value, 2.5);
+			EXPECT_EQ(o.exec_id, 2);
+		} else {
+			EXPECT_EQ(end, -1) << "the end values are emitted once";
+			end = (int)k;
+			EXPECT_EQ(o.dout_mask, 1ull << 1);
+			EXPECT_EQ(o.dout_value, 0u);
+			ASSERT_EQ(o.aout_count, 1);
+			EXPECT_EQ(o.aout[0].index, 0);
+			EXPECT_DOUBLE_EQ(o.aout[0].value, -1.0);
+		}
+	}
+	ASSERT_GT(start, 0);
+	ASSERT_GT(end, start);
+	EXPECT_LT(s.trace[end][1], 5);		// still moving before that period
+	EXPECT_DOUBLE_EQ(s.trace[end + 1][0], 5);	// which ends at its end, (5, 5)
+	EXPECT_DOUBLE_EQ(s.trace[end + 1][1], 5);
 }

@@ -174,8 +174,9 @@ TEST(TpQueue, BadArgumentsAreRefusedAndChangeNothing)
 	EXPECT_EQ(tp_set_term_cond(s.tp, 7, 0), TP_ERR_INVALID);
 	EXPECT_EQ(tp_set_term_cond(s.tp, TP_TERM_PARABOLIC, -1), TP_ERR_INVALID);
 	EXPECT_EQ(tp_set_axis_limits(s.tp, 9, 1, 1), TP_ERR_INVALID);
-	EXPECT_EQ(tp_set_dout(s.tp, 64, 1), TP_ERR_INVALID);
-	EXPECT_EQ(tp_set_aout(s.tp, -1, 1), TP_ERR_INVALID);
+	EXPECT_EQ(tp_set_dout(s.tp, 64, 1, 1), TP_ERR_INVALID);
+	EXPECT_EQ(tp_set_aout(s.tp, -1, 1, 1), TP_ERR_INVALID);
+	EXPECT_EQ(tp_set_aout(s.tp, 0, 1, NAN), TP_ERR_INVALID);
 	EXPECT_EQ(tp_set_max_feed_scale(s.tp, 0.5), TP_ERR_INVALID);
 	EXPECT_EQ(tp_size(2), 0u);
 	std::vector<double> small(8);

@@ -116,6 +116,15 @@ TEST(CmdCheck, IoSpindleAndValueDomains)
     EXPECT_EQ(check(c), MOTION_CMD_OK);
     c.spindle_params[0] = 200;  // min above max
     EXPECT_EQ(check(c), MOTION_CMD_INVALID_PARAMS);
+    c = cmd(MOTCMD_SET_AXIS_EXT_OFFSET_LIMITS);
+    c.axis = 2;
+    EXPECT_EQ(check(c), MOTION_CMD_OK);  // 0, 0: no external offset on Z
+    c.vel = -1;
+    EXPECT_EQ(check(c), MOTION_CMD_INVALID_PARAMS);
+    c.vel = 1;
+    c.axis = 9;
+    EXPECT_EQ(check(c), MOTION_CMD_INVALID_PARAMS);
+    EXPECT_STREQ(cmdcheck_name(MOTCMD_SET_AXIS_EXT_OFFSET_LIMITS), "SET_AXIS_EXT_OFFSET_LIMITS");
     c = cmd(MOTCMD_SET_JOINT_VEL_LIMIT);
     c.joint = 0;
     EXPECT_EQ(check(c), MOTION_CMD_INVALID_PARAMS);  // 0 is no limit

@@ -24,6 +24,51 @@ TEST(MotcmdParse, JogsAndAxes)
     EXPECT_EQ(r->cmd.joint, -1);
 }
 
+TEST(MotcmdParse, SpindleOnWaitAndCss)
+{
+    auto r = motcmd_parse({"spindle-on", "1000"});
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->cmd.command, MOTCMD_SPINDLE_ON);
+    EXPECT_EQ(r->cmd.wait_for_at_speed, 0);
+    r = motcmd_parse({"spindle-on", "-500", "0", "wait"});
+    ASSERT_TRUE(r);
+    EXPECT_DOUBLE_EQ(r->cmd.vel, -500);
+    EXPECT_EQ(r->cmd.spindle, 0);
+    EXPECT_EQ(r->cmd.wait_for_at_speed, 1);
+    r = motcmd_parse({"spindle-on", "2000", "1", "10000", "3", "wait"});
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->cmd.spindle, 1);
+    EXPECT_DOUBLE_EQ(r->cmd.css_factor, 10000);
+    EXPECT_DOUBLE_EQ(r->cmd.xoffset, 3);
+    EXPECT_EQ(r->cmd.wait_for_at_speed, 1);
+    EXPECT_FALSE(motcmd_parse({"spindle-on", "2000", "1", "10000", "3", "later"}));
+    EXPECT_FALSE(motcmd_parse({"spindle-on", "wait"}));
+}
+
+TEST(MotcmdParse, SynchronizedOutputsWithEndValues)
+{
+    auto r = motcmd_parse({"dout", "3", "1"});
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->cmd.now, 1);
+    EXPECT_EQ(r->cmd.start, 1);
+    EXPECT_EQ(r->cmd.end, 1);
+    r = motcmd_parse({"dout", "3", "1", "sync", "0"});
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->cmd.now, 0);
+    EXPECT_EQ(r->cmd.start, 1);
+    EXPECT_EQ(r->cmd.end, 0);
+    r = motcmd_parse({"aout", "1", "2.5", "sync", "-1"});
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->cmd.now, 0);
+    EXPECT_DOUBLE_EQ(r->cmd.aout_start, 2.5);
+    EXPECT_DOUBLE_EQ(r->cmd.aout_end, -1);
+    r = motcmd_parse({"aout", "1", "2.5", "sync"});
+    ASSERT_TRUE(r);
+    EXPECT_DOUBLE_EQ(r->cmd.aout_end, 2.5);
+    EXPECT_FALSE(motcmd_parse({"dout", "3", "1", "later"}));
+    EXPECT_FALSE(motcmd_parse({"dout", "3", "1", "sync", "maybe"}));
+}
+
 TEST(MotcmdParse, MovesTakeUpToNineCoordinates)
 {
     auto r = motcmd_parse({"line", "1", "2", "3", "10", "100"});

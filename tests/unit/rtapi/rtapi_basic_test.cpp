@@ -149,6 +149,26 @@ TEST(RtapiModule, GetpidIsTheProcessId)
     EXPECT_EQ(rtapi_getpid(), (long)getpid());
 }
 
+// rtapi_getpid() caches the pid (the HAL lock asks for it every time); a fork's
+// child must get its own, not the cached parent's, and so must its HAL lock word
+TEST(RtapiModule, GetpidInAForkedChildIsTheChilds)
+{
+    ASSERT_EQ(rtapi_getpid(), (long)getpid());   // cached now
+    unsigned long parent_word = rtapi_mutex_self_word();
+    pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        bool ok = rtapi_getpid() == (long)getpid() && rtapi_getpid() != (long)getppid() &&
+                  rtapi_mutex_word_pid(rtapi_mutex_self_word()) == (int)getpid() &&
+                  rtapi_mutex_self_word() != parent_word;
+        _exit(ok ? 0 : 1);
+    }
+    int status = 0;
+    ASSERT_EQ(waitpid(child, &status, 0), child);
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+    EXPECT_EQ(rtapi_getpid(), (long)getpid());
+}
+
 TEST(RtapiTime, TimeIsMonotonicAndSleepsWait)
 {
     long long t0 = rtapi_get_time();

@@ -18,14 +18,16 @@
  * io_error recovery). Boards whose real card is programmed by the driver (5i20)
  * take firmware=: the bitstream goes, bit-reversed as on the card, into a model of
  * the FPGA's configuration port (hm2_sim_fpgacfg.c) that raises DONE only for a
- * Xilinx bitstream in the right bit order; until then the registers read 0. */
+ * Xilinx bitstream in the right bit order; until then the registers read 0.
+ * bus=pci shows the boards as simulated Mesa PCI cards instead (hm2_sim_pci.c: the
+ * card's IDs and BARs, a PLX bridge model on the 5i20, 4i65, 5i23, 4i68, 4i69) for
+ * hm2_pci to find and register: loadrt hm2_sim bus=pci board=5i20; loadrt hm2_pci. */
 #include "rtapi.h"
 #include "rtapi_app.h"
 #include "rtapi_string.h"
 #include "hal.h"
 #include "../hm2_llio.h"
-#include "hm2_sim_model.h"
-#include "hm2_sim_fpgacfg.h"
+#include "hm2_sim_board.h"
 #include "../hm2_bitfile.h"
 #include "../hm2_boards.h"
 
@@ -33,46 +35,24 @@ MODULE_LICENSE("GPL");
 MODULE_DESCRIPTION("Simulated Mesa HostMot2 board for hostmot2");
 
 #define MAX_BOARDS 4
-#define MAX_QUEUE 64
-#define MAX_QUEUED_WRITE_WORDS 1024
+#define MAX_QUEUE HM2_SIM_MAX_QUEUE
+#define MAX_QUEUED_WRITE_WORDS HM2_SIM_MAX_QUEUED_WRITE_WORDS
 
 static char *board[MAX_BOARDS];
-RTAPI_MP_ARRAY_STRING(board, MAX_BOARDS, "simulated boards: 5i25 (7i76 step/dir), 5i20 (SVST8_4), 5i23 (7i65, muxed encoders, 3pwmgen, UART)");
+RTAPI_MP_ARRAY_STRING(board, MAX_BOARDS, "simulated boards: 5i25 (7i76 step/dir), 5i20 (SVST8_4), 5i23 (7i65, muxed encoders, 3pwmgen, UART), 5i22, 5i21, 3x20, 7i43 (SVST4_4); bus=pci: also 6i25, 4i65, 4i68, 4i69, 5i24");
 static char *config[MAX_BOARDS];
 RTAPI_MP_ARRAY_STRING(config, MAX_BOARDS, "hostmot2 config string of each board");
 static char *fault[MAX_BOARDS];
-RTAPI_MP_ARRAY_STRING(fault, MAX_BOARDS, "IDROM defect to present (driver tests)");
-
-struct queued_read {
-	rtapi_u32 addr;
-	void *buf;
-	int size;
-};
-
-struct sim_board {
-	struct hm2_llio llio;
-	struct hm2_sim_model model;
-	hal_bit_t **io_in, **io_out;	/* per IO pin */
-	hal_u32_t *bus_words;
-	hal_bit_t *bus_error;		/* in: every transfer fails (a cable pulled) */
-	hal_bit_t *mux_in[SIM_MAX_INST][3];	/* muxed encoders: A, B, index */
-	hal_s32_t *dac[SIM_7I65_CHANNELS];
-	hal_bit_t *enable[SIM_7I65_CHANNELS], *din[SIM_7I65_INPUTS], *card_bitten;
-	struct queued_read rq[MAX_QUEUE];
-	int num_rq;
-	rtapi_u32 wq_addr[MAX_QUEUED_WRITE_WORDS], wq_val[MAX_QUEUED_WRITE_WORDS];
-	int num_wq;
-	int registered;
-	int fault;			/* enum sim_fault, kept across programming */
-	struct hm2_sim_fpgacfg fpga;	/* done = 0: unconfigured, registers read 0 */
-};
+RTAPI_MP_ARRAY_STRING(fault, MAX_BOARDS, "IDROM defect to present (driver tests); bus=pci: or a PLX fault (no-done, done-stuck, init-stuck)");
+static char *bus = "";
+RTAPI_MP_STRING(bus, "pci: show the boards as simulated PCI cards for hm2_pci instead of registering them");
 
 static int comp_id;
 static struct sim_board *boards;
 static int num_boards;
 
 /* Before a transaction: the outside world's levels in, the model's time forward. */
-static void sync_in(struct sim_board *b)
+void hm2_sim_sync_in(struct sim_board *b)
 {
 	struct hm2_sim_model *m = &b->model;
 	int i;
@@ -92,7 +72,7 @@ static void sync_in(struct sim_board *b)
 }
 
 /* After it: the connector levels (writes may have changed them) and the counter. */
-static void sync_out(struct sim_board *b)
+void hm2_sim_sync_out(struct sim_board *b)
 {
 	struct hm2_sim_model *m = &b->model;
 	int i;
@@ -130,10 +110,10 @@ static int sim_read(struct hm2_llio *llio, rtapi_u32 addr, void *buf, int size)
 		return -EINVAL;
 	if (bus_down(b))
 		return -EIO;
-	sync_in(b);
+	hm2_sim_sync_in(b);
 	for (i = 0; i < size / 4; i++)
 		w[i] = b->fpga.done ? hm2_sim_model_read(&b->model, addr + 4 * i) : 0;
-	sync_out(b);
+	hm2_sim_sync_out(b);
 	return 0;
 }
 
@@ -147,10 +127,10 @@ static int sim_write(struct hm2_llio *llio, rtapi_u32 addr, const void *buf, int
 		return -EINVAL;
 	if (bus_down(b))
 		return -EIO;
-	sync_in(b);
+	hm2_sim_sync_in(b);
 	for (i = 0; i < size / 4 && b->fpga.done; i++)
 		hm2_sim_model_write(&b->model, addr + 4 * i, w[i]);
-	sync_out(b);
+	hm2_sim_sync_out(b);
 	return 0;
 }
 
@@ -177,7 +157,7 @@ static int sim_send_queued_reads(struct hm2_llio *llio)
 		b->num_rq = 0;
 		return -EIO;
 	}
-	sync_in(b);
+	hm2_sim_sync_in(b);
 	for (i = 0; i < b->num_rq; i++) {
 		rtapi_u32 *w = b->rq[i].buf;
 
@@ -185,7 +165,7 @@ static int sim_send_queued_reads(struct hm2_llio *llio)
 			w[j] = b->fpga.done ? hm2_sim_model_read(&b->model, b->rq[i].addr + 4 * j) : 0;
 	}
 	b->num_rq = 0;
-	sync_out(b);
+	hm2_sim_sync_out(b);
 	return 0;
 }
 
@@ -205,11 +185,11 @@ static int sim_send_queued_writes(struct hm2_llio *llio)
 		b->num_wq = 0;
 		return -EIO;
 	}
-	sync_in(b);
+	hm2_sim_sync_in(b);
 	for (i = 0; i < b->num_wq && b->fpga.done; i++)
 		hm2_sim_model_write(&b->model, b->wq_addr[i], b->wq_val[i]);
 	b->num_wq = 0;
-	sync_out(b);
+	hm2_sim_sync_out(b);
 	return 0;
 }
 
@@ -296,6 +276,51 @@ static int export_board(struct sim_board *b, int k)
 	return rc;
 }
 
+/* bus=pci: the board becomes a simulated PCI card with the card's IDs and BARs;
+ * hm2_pci finds it and registers it. A card without a layout of its own gets the
+ * first layout of its shape (6i25: the 5i25's; 4i65, 4i68, 4i69, 5i24: the 5i20's). */
+static int setup_pci_board(int k, const char *name, const char *cfg, const char *fault_name)
+{
+	const struct hm2_board_info *info = hm2_board_find(name);
+	const struct sim_layout *l = hm2_sim_layout_find(name);
+	struct sim_board *b = &boards[k];
+	int f = SIM_FAULT_NONE, pf = SIM_PLX_OK, rc;
+
+	if (!l && info)
+		l = hm2_sim_layout_shaped(info->connectors, info->pins_per_connector);
+	if (!l || !info) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "hm2_sim: board=%s: no simulated PCI card of that name; "
+				"known: 5i25, 6i25, 5i20, 4i65, 5i23, 4i68, 4i69, 5i24, 5i22, 5i21, 3x20\n", name);
+		return -EINVAL;
+	}
+	if (cfg && *cfg) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "hm2_sim: config= with bus=pci: give it to hm2_pci\n");
+		return -EINVAL;
+	}
+	if (fault_name && *fault_name) {
+		pf = hm2_sim_plx_fault_find(fault_name);
+		f = pf < 0 ? hm2_sim_fault_find(fault_name) : SIM_FAULT_NONE;
+		if (f < 0) {
+			rtapi_print_msg(RTAPI_MSG_ERR, "hm2_sim: fault=%s: unknown fault; known: %s, "
+					"no-done, done-stuck, init-stuck\n", fault_name,
+					hm2_sim_fault_names());
+			return -EINVAL;
+		}
+		if (pf < 0)
+			pf = SIM_PLX_OK;
+	}
+	hm2_sim_model_init(&b->model, l, f, rtapi_get_time());
+	b->fault = f;
+	b->fpga.done = 1;	/* configured by an earlier load, until firmware= resets it */
+	rc = export_board(b, k);
+	if (!rc)
+		rc = hm2_sim_pci_attach(b, k, name, pf);
+	if (!rc)
+		rtapi_print_msg(RTAPI_MSG_INFO, "hm2_sim: board %d is a simulated PCI %s running %s\n",
+				k, name, l->firmware);
+	return rc;
+}
+
 static int setup_board(int k, const char *name, const char *cfg, const char *fault_name)
 {
 	const struct sim_layout *l = hm2_sim_layout_find(name);
@@ -357,9 +382,28 @@ static int setup_board(int k, const char *name, const char *cfg, const char *fau
 	return 0;
 }
 
+static void release_boards(void)
+{
+	int k;
+
+	for (k = 0; k < num_boards; k++) {
+		if (boards[k].registered)
+			hm2_unregister(&boards[k].llio);
+		hm2_sim_pci_detach(&boards[k]);
+	}
+}
+
+/* board k of the module parameters, registered or (bus=pci) shown as a PCI card */
+static int setup_entry(int k)
+{
+	if (strcmp(bus, "pci") == 0)
+		return setup_pci_board(k, board[k], config[k], fault[k]);
+	return setup_board(k, board[k], config[k], fault[k]);
+}
+
 int rtapi_app_main(void)
 {
-	int k, rc = 0;
+	int k;
 
 	comp_id = hal_init("hm2_sim");
 	if (comp_id < 0)
@@ -384,25 +428,18 @@ int rtapi_app_main(void)
 		hal_exit(comp_id);
 		return -ENOMEM;
 	}
-	for (k = 0; k < num_boards && !rc; k++)
-		rc = setup_board(k, board[k], config[k], fault[k]);
-	if (rc) {
-		for (k = 0; k < num_boards; k++)
-			if (boards[k].registered)
-				hm2_unregister(&boards[k].llio);
+	if (strcmp(bus, "") != 0 && strcmp(bus, "pci") != 0) {
+		rtapi_print_msg(RTAPI_MSG_ERR, "hm2_sim: bus=%s: unknown; bus=pci or none\n", bus);
 		hal_exit(comp_id);
-		return rc;
+		return -EINVAL;
 	}
-	hal_ready(comp_id);
-	return 0;
+	for (k = 0; k < num_boards; k++)
+		boards[k].pci_handle = -1;
+	return hm2_llio_setup_boards(comp_id, num_boards, setup_entry, release_boards);
 }
 
 void rtapi_app_exit(void)
 {
-	int k;
-
-	for (k = 0; k < num_boards; k++)
-		if (boards[k].registered)
-			hm2_unregister(&boards[k].llio);
+	release_boards();
 	hal_exit(comp_id);
 }

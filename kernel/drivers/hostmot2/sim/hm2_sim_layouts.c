@@ -23,6 +23,9 @@
 	PD(14, u, 0x8A), PD(14, u, 0x8B), PD(14, u, 0x8C)
 #define UART(u) PD(9, u, 0x81), PD(9, u, 0x82), PD(10, u, 0x01)
 #define GPIO4 GPIO, GPIO, GPIO, GPIO
+#define GPIO8 GPIO4, GPIO4
+#define SERVO4(u0) ENC(u0), ENC(u0 + 1), ENC(u0 + 2), ENC(u0 + 3), PWM(u0), PWM(u0 + 1), \
+	PWM(u0 + 2), PWM(u0 + 3)
 
 /* A 5i25 running the 7i76 step/dir firmware: five step/dir stepgens, a spindle
  * encoder and PWM on P2, the DPLL; P3's 17 pins as GPIO (the real 7i76 field I/O
@@ -95,7 +98,92 @@ static const struct sim_layout layout_5i23 = {
 	},
 };
 
-static const struct sim_layout *const layouts[] = { &layout_5i25, &layout_5i20, &layout_5i23 };
+/* A 5i22 (four 24-pin connectors): eight servo channels on P2 and P3, four step/dir
+ * stepgens on P4, P5 all GPIO. */
+static const struct sim_layout layout_5i22 = {
+	.board = "5i22", .firmware = "8 servo channels, 4 stepgens",
+	.idrom_name = "MESA5I22", .ports = 4, .port_width = 24, .num_leds = 8,
+	.connector = { "P2", "P3", "P4", "P5" },
+	.clock_low = 48000000, .clock_high = 96000000, .fpga_size = 1000, .fpga_pins = 320,
+	.md = {
+		{ 2, 0, 1, 1, 0x0C00, 3, 0, 0x0 },
+		{ 3, 0, 1, 4, 0x1000, 5, 0, 0x1F },
+		{ 4, 2, 1, 8, 0x3000, 5, 0, 0x03 },
+		{ 6, 0, 2, 8, 0x4000, 5, 0, 0x03 },
+		{ 5, 2, 1, 4, 0x2000, 10, 0, 0x1FF },
+		{ 128, 0, 1, 1, 0x0200, 1, 0, 0x0 },
+	},
+	.pd = {
+		SERVO4(0), SERVO4(4), STEP(0), STEP(1), STEP(2), STEP(3), GPIO8, GPIO8,
+		GPIO8, GPIO8, GPIO8,
+	},
+};
+
+/* A 5i21 (one 64-pin P1, two 32-bit IOPorts): four servo channels and four
+ * step/dir stepgens, the rest GPIO. */
+static const struct sim_layout layout_5i21 = {
+	.board = "5i21", .firmware = "4 servo channels, 4 stepgens",
+	.idrom_name = "MESA5I21", .ports = 2, .port_width = 32, .num_leds = 8,
+	.connector = { "P1", "P1" },
+	.clock_low = 48000000, .clock_high = 96000000, .fpga_size = 400, .fpga_pins = 208,
+	.md = {
+		{ 2, 0, 1, 1, 0x0C00, 3, 0, 0x0 },
+		{ 3, 0, 1, 2, 0x1000, 5, 0, 0x1F },
+		{ 4, 2, 1, 4, 0x3000, 5, 0, 0x03 },
+		{ 6, 0, 2, 4, 0x4000, 5, 0, 0x03 },
+		{ 5, 2, 1, 4, 0x2000, 10, 0, 0x1FF },
+		{ 128, 0, 1, 1, 0x0200, 1, 0, 0x0 },
+	},
+	.pd = {
+		SERVO4(0), GPIO8, STEP(0), STEP(1), STEP(2), STEP(3), GPIO8, GPIO8, GPIO8,
+	},
+};
+
+/* A 3x20 (six 24-pin connectors, no LEDs): eight servo channels on P4 and P5, four
+ * step/dir stepgens on P6, the rest GPIO. */
+static const struct sim_layout layout_3x20 = {
+	.board = "3x20", .firmware = "8 servo channels, 4 stepgens",
+	.idrom_name = "MESA3X20", .ports = 6, .port_width = 24, .num_leds = 0,
+	.connector = { "P4", "P5", "P6", "P9", "P8", "P7" },
+	.clock_low = 50000000, .clock_high = 100000000, .fpga_size = 1000, .fpga_pins = 456,
+	.md = {
+		{ 2, 0, 1, 1, 0x0C00, 3, 0, 0x0 },
+		{ 3, 0, 1, 6, 0x1000, 5, 0, 0x1F },
+		{ 4, 2, 1, 8, 0x3000, 5, 0, 0x03 },
+		{ 6, 0, 2, 8, 0x4000, 5, 0, 0x03 },
+		{ 5, 2, 1, 4, 0x2000, 10, 0, 0x1FF },
+	},
+	.pd = {
+		SERVO4(0), SERVO4(4), STEP(0), STEP(1), STEP(2), STEP(3), GPIO8, GPIO8,
+		GPIO8, GPIO8, GPIO8, GPIO8, GPIO8, GPIO8, GPIO8, GPIO8, GPIO8,
+	},
+};
+
+/* A 7i43 running SVST4_4: four servo channels (encoder + PWM) on P4, four stepgens
+ * with six table-mode pins each on P3. The board behind a simulated parallel port
+ * (sim_parport board=7i43, kernel/drivers/sim/sim_7i43.c) and hm2_sim board=7i43. */
+static const struct sim_layout layout_7i43 = {
+	.board = "7i43", .firmware = "SVST4_4 (4 encoders, 4 pwmgens, 4 stepgens)",
+	.idrom_name = "MESA7I43", .ports = 2, .port_width = 24, .num_leds = 8,
+	.connector = { "P4", "P3" },
+	.clock_low = 50000000, .clock_high = 100000000, .fpga_size = 200, .fpga_pins = 144,
+	.md = {
+		{ 2, 0, 1, 1, 0x0C00, 3, 0, 0x0 },
+		{ 3, 0, 1, 2, 0x1000, 5, 0, 0x1F },
+		{ 4, 2, 1, 4, 0x3000, 5, 0, 0x03 },
+		{ 6, 0, 2, 4, 0x4000, 5, 0, 0x03 },
+		{ 5, 2, 1, 4, 0x2000, 10, 0, 0x1FF },
+		{ 128, 0, 1, 1, 0x0200, 1, 0, 0x0 },
+	},
+	.pd = {
+		ENC(0), ENC(1), ENC(2), ENC(3), PWM(0), PWM(1), PWM(2), PWM(3),
+		STEP6(0), STEP6(1), STEP6(2), STEP6(3),
+	},
+};
+
+static const struct sim_layout *const layouts[] = { &layout_5i25, &layout_5i20, &layout_5i23,
+						    &layout_5i22, &layout_5i21, &layout_3x20,
+						    &layout_7i43 };
 
 const struct sim_layout *hm2_sim_layout_find(const char *board)
 {
@@ -107,10 +195,20 @@ const struct sim_layout *hm2_sim_layout_find(const char *board)
 	return 0;
 }
 
+const struct sim_layout *hm2_sim_layout_shaped(int ports, int port_width)
+{
+	unsigned i;
+
+	for (i = 0; i < sizeof(layouts) / sizeof(layouts[0]); i++)
+		if (layouts[i]->ports == ports && layouts[i]->port_width == port_width)
+			return layouts[i];
+	return 0;
+}
+
 const char *hm2_sim_layout_names(void)
 {
 	return "5i25 (7i76 step/dir), 5i20 (SVST8_4 servo), 5i23 (7i65 on BSPI, muxed encoders, "
-	       "3pwmgen, UART)";
+	       "3pwmgen, UART), 5i22, 5i21 and 3x20 (servo + step/dir), 7i43 (SVST4_4)";
 }
 
 static const char *const fault_names[SIM_FAULT_COUNT] = {

@@ -346,7 +346,7 @@ void hm2_sim_model_advance(struct hm2_sim_model *m, long long now_ns)
 		m->wd_timer -= t;
 		if (m->wd_timer & WD_BIT) {	/* bite: every pin released */
 			m->wd_status |= 1;
-			for (i = 0; i < 4; i++)
+			for (i = 0; i < m->layout->ports; i++)
 				m->ddr[i] = m->od[i] = 0;
 		}
 	}

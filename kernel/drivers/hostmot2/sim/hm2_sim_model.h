@@ -16,6 +16,7 @@
 #include "rtapi.h"
 
 #define SIM_MAX_PINS 144
+#define SIM_MAX_PORTS 6
 #define SIM_MAX_INST 16
 #define SIM_MAX_MODULES 12
 #define SIM_WORDS (0x10000 / 4)
@@ -37,7 +38,7 @@ struct sim_layout {
 	const char *firmware;		/* what it imitates, for messages */
 	const char *idrom_name;		/* 8 chars, "MESA5I25" */
 	int ports, port_width, num_leds;
-	const char *connector[4];
+	const char *connector[SIM_MAX_PORTS];
 	int bspi_7i65;			/* a 7i65 card hangs on BSPI 0 */
 	rtapi_u32 clock_low, clock_high, fpga_size, fpga_pins;
 	struct sim_md md[SIM_MAX_MODULES];	/* ends at gtag 0 */
@@ -122,7 +123,8 @@ struct hm2_sim_model {
 	rtapi_u32 base_uart_tx, base_uart_rx;
 	int num_stepgens, num_tppwm, num_bspi, num_uart;
 	/* IOPort */
-	rtapi_u32 data[4], ddr[4], alt[4], od[4], inv[4];
+	rtapi_u32 data[SIM_MAX_PORTS], ddr[SIM_MAX_PORTS], alt[SIM_MAX_PORTS], od[SIM_MAX_PORTS];
+	rtapi_u32 inv[SIM_MAX_PORTS];
 	rtapi_u8 ext_in[SIM_MAX_PINS], level[SIM_MAX_PINS];
 	/* watchdog */
 	rtapi_u32 wd_timer, wd_reload, wd_status;
@@ -146,6 +148,8 @@ struct hm2_sim_model {
 
 const struct sim_layout *hm2_sim_layout_find(const char *board);
 const char *hm2_sim_layout_names(void);		/* "5i25, 5i20" for messages */
+/* the first layout with this many connectors of this width, or NULL */
+const struct sim_layout *hm2_sim_layout_shaped(int ports, int port_width);
 int hm2_sim_fault_find(const char *name);	/* enum sim_fault or -1 */
 const char *hm2_sim_fault_names(void);
 

@@ -32,14 +32,19 @@ struct Config {
 	double center_arc_tolerance_inch = 0.002828;
 	double center_arc_tolerance_mm = 0.028284;
 	bool disable_g92_persistence = false;
+	bool disable_fanuc_style_sub = false;   // [RS274NGC]DISABLE_FANUC_STYLE_SUB: no M98/M99
 	bool ini_vars = true;                   // #<_ini[section]key>
 	bool hal_pin_vars = true;               // #<_hal[name]>
 	std::map<std::string, std::string> ini; // "SECTION]KEY" -> value, for #<_ini[..]..>
 	bool file_output = true;                // (LOGOPEN,..), (PROBEOPEN,..) may create files
+	bool in_task = false;                   // #<_task>: 1 when a machine runs the program (milltask)
 	// Resource limits (bad input must not hang or exhaust memory):
 	long max_loop_iterations = 10000000;    // per while/do/repeat loop entry
 	long max_blocks = 0;                    // blocks executed per program, 0 = unlimited
 	size_t max_file_lines = 50000000;       // lines of one program or subroutine file
+	// M99 in the main program restarts it; after this many restarts it ends the program
+	// instead (END, as at a closing %). -1 = endless, as on a machine.
+	long max_m99_restarts = -1;
 
 	// Reads the keys above from an INI file; returns false and sets `error` on failure.
 	static bool from_ini(const std::string& path, Config& cfg, std::string& error);
@@ -80,12 +85,25 @@ public:
 	bool save_parameters();
 	bool save_parameters(const std::string& path);
 
+	// Task's re-synch (after jogs, homing, abort): the machine position the next
+	// move starts from, in machine units. Only when no cutter-comp move is pending.
+	void set_machine_position(const Pos& p);
+
 	void set_block_delete(bool on);
 	void set_optional_stop(bool on);
 
 	const Error& error() const;
 	int line() const;                       // line of the block last read
 	double parameter(int index) const;      // #index (0 if out of range)
+	// The modal G codes in effect, times ten (G17 = 170, G91.1 = 911), one per group in
+	// this order: motion, plane, cutter compensation, units, distance mode, feed mode,
+	// coordinate system, tool length offset, canned-cycle return, path control,
+	// spindle speed mode, arc distance mode, lathe diameter mode (status displays:
+	// emcrsh PROGRAM_CODES).
+	std::vector<int> active_g_codes() const;
+	// The modal M codes in effect: spindle (3, 4, 5), mist (7), flood (8) or neither (9),
+	// overrides (48 enabled, 49 disabled).
+	std::vector<int> active_m_codes() const;
 	bool named_parameter(const std::string& name, double& value) const;
 
 	struct Impl;

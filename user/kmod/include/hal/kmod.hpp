@@ -56,6 +56,10 @@ struct HelperRun {
 };
 HelperRun run_helper(const std::vector<std::string>& argv);
 
+// The helper's argv that inserts rtapi or hal_lib; hal_lib gets hal_size=$HAL_SIZE
+// when the environment sets HAL_SIZE (the HAL segment's size, chosen at its creation).
+std::vector<std::string> core_insert_argv(const std::string& core);
+
 // --- halcmd's loadrt/unloadrt in the kernel flavor (kmod_modules.cpp). Errors are
 // worded as the simulated flavor's rtapi_app words them, so .hal files and their
 // tests see the same messages in both flavors. ---

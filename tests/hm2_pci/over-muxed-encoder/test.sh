@@ -1,0 +1,3 @@
+# tests/hostmot2/muxed-encoder with the simulated card behind hm2_pci (PCI IDs, BARs, PLX bridge)
+. ../../helpers/hm2-over-pci.sh
+hm2_over_pci muxed-encoder

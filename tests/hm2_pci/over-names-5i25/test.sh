@@ -1,0 +1,3 @@
+# tests/hostmot2/names-5i25 with the simulated card behind hm2_pci (PCI IDs, BARs, PLX bridge)
+. ../../helpers/hm2-over-pci.sh
+hm2_over_pci names-5i25
