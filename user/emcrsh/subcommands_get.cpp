@@ -7,13 +7,13 @@
 #include <cstring>
 #include <ctime>
 
+#include "ini/axes.hpp"
 #include "ini/ini_file.hpp"
 #include "session.hpp"
 #include "units.hpp"
 
 namespace hal::emcrsh {
 
-static const char AXES[] = "XYZABCUVW";
 
 bool Session::refresh()
 {
@@ -43,7 +43,7 @@ double Session::num(const std::string& k) const { return std::strtod(key(k).c_st
 
 double Session::axis_value(const std::string& field, int axis) const
 {
-    std::string l(1, static_cast<char>(AXES[axis] - 'A' + 'a'));
+    std::string l(1, hal::ini::axis_lower(axis));
     return num("axis." + l + "." + field);   // 0 for an axis the machine lacks
 }
 
@@ -54,9 +54,9 @@ std::vector<double> Session::offsets(const std::string& k) const
     std::string axes = key("traj.axes");
     std::vector<std::string> w = split_words(key(k));
     for (size_t i = 0; i < axes.size() && i < w.size(); ++i) {
-        const char* p = std::strchr(AXES, axes[i]);
-        if (p)
-            v[static_cast<size_t>(p - AXES)] = std::strtod(w[i].c_str(), nullptr);
+        int a = hal::ini::axis_index(axes[i]);
+        if (a >= 0)
+            v[static_cast<size_t>(a)] = std::strtod(w[i].c_str(), nullptr);
     }
     return v;
 }

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "ini/axes.hpp"
 #include "session.hpp"
 
 namespace hal::emcrsh {
@@ -49,7 +50,7 @@ static bool joint_or_axis(const std::string& s, std::string& out)
 {
     long j = 0;
     std::string u = upper(s);
-    if (u.size() == 1 && std::string("XYZABCUVW").find(u[0]) != std::string::npos) {
+    if (u.size() == 1 && hal::ini::axis_index(u[0]) >= 0) {
         out = u;
         return true;
     }

@@ -19,7 +19,7 @@ Result<Config> read_config(const ini::IniFile& ini)
     r.coordinates(coords);
     bool seen[9] = {};
     for (char ch : coords)
-        seen[std::strchr(AXIS_LETTERS, std::tolower(static_cast<unsigned char>(ch))) - AXIS_LETTERS] = true;
+        seen[ini::axis_index(ch)] = true;   // coordinates() let only axis letters through
     c.joints = static_cast<int>(coords.size());   // the default: one joint per letter (a gantry repeats one)
     for (int a = 0; a < 9; ++a)
         if (seen[a])

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "hal/result.hpp"
+#include "ini/axes.hpp"
 #include "ini/ini_file.hpp"
 
 namespace hal::halui {
@@ -15,7 +16,6 @@ namespace hal::halui {
 constexpr int MAX_JOINTS = 16;       // motion's limit (motion_if.h)
 constexpr int MAX_SPINDLES = 8;
 constexpr int MAX_MDI_COMMANDS = 64; // halui.mdi-command-00 .. -63
-constexpr const char* AXIS_LETTERS = "xyzabcuvw";
 
 struct Config {
     int joints = 3;                      // [KINS]JOINTS (default: one per coordinate letter)

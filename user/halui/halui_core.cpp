@@ -254,7 +254,7 @@ void Core::jogs(const Inputs& in, std::vector<Command>& cmds)
         sel = want;
     };
     auto joint_name = [](size_t j) { return std::to_string(j); };
-    auto axis_name = [this](size_t k) { return std::string(1, AXIS_LETTERS[cfg_.axes[k]]); };
+    auto axis_name = [this](size_t k) { return std::string(1, ini::axis_lower(cfg_.axes[k])); };
     size_t jsel = joint_selected_;
     select(in.joint, p.joint, jsel, in.joint_selected, jv, joint_name);
     joint_selected_ = static_cast<unsigned>(jsel);

@@ -160,7 +160,7 @@ int Pins::create(int comp_id, const Config& cfg, Inputs& in, Outputs& out, std::
     // axes by letter (EMC2 2.4: halui.axis.N.pos-* by axis number)
     for (size_t k = 0; k < cfg.axes.size(); ++k) {
         const int a = cfg.axes[k];
-        const std::string p = std::string("axis.") + AXIS_LETTERS[a] + ".";
+        const std::string p = std::string("axis.") + ini::axis_lower(a) + ".";
         const std::string old = "axis." + std::to_string(a) + ".";
         JogIn& j = in.axis[k];
         AxisOut& o = out.axis[k];
@@ -228,8 +228,8 @@ int Pins::create(int comp_id, const Config& cfg, Inputs& in, Outputs& out, std::
     // tool (2.9 spells length_offset; the seed page length-offset)
     add(U, O, &out.tool_number, "tool.number");
     for (int a = 0; a < 9; ++a)
-        add(F, O, &out.tool_length_offset[a], std::string("tool.length_offset.") + AXIS_LETTERS[a],
-            {std::string("tool.length-offset.") + AXIS_LETTERS[a]});
+        add(F, O, &out.tool_length_offset[a], std::string("tool.length_offset.") + ini::axis_lower(a),
+            {std::string("tool.length-offset.") + ini::axis_lower(a)});
     add(F, O, &out.tool_diameter, "tool.diameter");
 
     for (size_t k = 0; k < cfg.mdi.size(); ++k) {

@@ -54,9 +54,9 @@ void pose(const Map& st, const std::string& key, const std::string& axes, double
         if (end == p)
             return;
         p = end;
-        const char* a = std::strchr(AXIS_LETTERS, std::tolower(static_cast<unsigned char>(letter)));
-        if (a && *a)
-            out[a - AXIS_LETTERS] = std::isfinite(v) ? v : 0;
+        int a = ini::axis_index(letter);
+        if (a >= 0)
+            out[a] = std::isfinite(v) ? v : 0;
     }
 }
 

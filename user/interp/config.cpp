@@ -5,7 +5,7 @@
 #include <cctype>
 #include <cstdlib>
 
-#include "ini/ini_file.hpp"
+#include "ini/ini_reader.hpp"
 #include "rs274/interp.hpp"
 
 namespace rs274 {
@@ -94,11 +94,11 @@ bool Config::from_ini(const std::string& path, Config& cfg, std::string& error)
 			return false;
 		}
 	}
-	if (get("TRAJ", "COORDINATES", v)) {
-		cfg.axes.clear();
-		for (char c : v)
-			if (c != ' ' && c != '\t')
-				cfg.axes += (char)std::toupper((unsigned char)c);
+	hal::ini::Reader coords{ini, {}};   // the letters as task and halui read them
+	coords.coordinates(cfg.axes);
+	if (!coords.err.empty() && !bad) {
+		error = coords.err;
+		bad = true;
 	}
 	if (get("RS274NGC", "PARAMETER_FILE", v))
 		cfg.parameter_file = rel(v);

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "impl.hpp"
+#include "ini/axes.hpp"
 
 namespace rs274 {
 
@@ -48,9 +49,9 @@ Interp::Impl::Impl(Canon& c, Config conf) : canon(c), cfg(std::move(conf))
 	params.assign(MAX_PARAM, 0);
 	param_in_file.assign(MAX_PARAM, 0);
 	for (char l : cfg.axes) {
-		const char* p = std::strchr("XYZABCUVW", std::toupper((unsigned char)l));
-		if (p && l)
-			axis_on[p - "XYZABCUVW"] = true;
+		int a = hal::ini::axis_index(l);
+		if (a >= 0)
+			axis_on[a] = true;
 	}
 	units = cfg.machine_units;
 	frames.emplace_back();

@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <cstring>
 
+#include "ini/axes.hpp"
+
 namespace rs274 {
 
 std::string num(double v)
@@ -21,9 +23,9 @@ std::string num(double v)
 PrintCanon::PrintCanon(std::ostream& out, const std::string& axes) : out_(out)
 {
 	for (char l : axes) {
-		const char* p = std::strchr("XYZABCUVW", std::toupper((unsigned char)l));
-		if (p && l)
-			axis_on_[p - "XYZABCUVW"] = true;
+		int a = hal::ini::axis_index(l);
+		if (a >= 0)
+			axis_on_[a] = true;
 	}
 }
 

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "impl.hpp"
+#include "ini/axes.hpp"
 
 namespace rs274 {
 
@@ -44,15 +45,14 @@ void Interp::Impl::load_tool_table()
 			double v = std::strtod(s, &end);
 			if (end == s || *end)
 				fail("%s:%d: bad tool table field '%s'", cfg.tool_table.c_str(), lineno, w.c_str());
-			static const char axes[] = "XYZABCUVW";
-			const char* ax = l ? std::strchr(axes, l) : nullptr;
+			int ax = hal::ini::axis_index(l);
 			if (l == 'T') {
 				number = (int)v;
 			} else if (l == 'P') {
 				t.pocket = (int)v;
 				has_pocket = true;
-			} else if (ax) {
-				t.offset[ax - axes] = v;
+			} else if (ax >= 0) {
+				t.offset[ax] = v;
 			} else if (l == 'D') {
 				t.diameter = v;
 			} else if (l == 'I') {

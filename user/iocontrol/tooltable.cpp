@@ -10,9 +10,11 @@
 #include <fstream>
 #include <set>
 
+#include "ini/axes.hpp"
+
 namespace hal::io {
 
-static const char AXES[] = "XYZABCUVW";
+using hal::ini::AXIS_LETTERS;
 
 static bool parse_double(const std::string& s, double& v)
 {
@@ -65,7 +67,7 @@ Result<std::optional<Tool>> parse_tool_line(const std::string& raw)
         any = true;
         char letter = static_cast<char>(std::toupper(static_cast<unsigned char>(word[0])));
         std::string value = word.substr(1);
-        const char* ax = std::strchr(AXES, letter);
+        const char* ax = std::strchr(AXIS_LETTERS, letter);
         bool good = true;
         if (letter == 'T') {
             good = parse_int(value, t.toolno) && t.toolno >= 0;
@@ -73,7 +75,7 @@ Result<std::optional<Tool>> parse_tool_line(const std::string& raw)
             good = parse_int(value, t.pocket) && t.pocket >= 0 && t.pocket < POCKETS_MAX;
             have_p = true;
         } else if (ax && letter != '\0') {
-            good = parse_double(value, t.offset[ax - AXES]);
+            good = parse_double(value, t.offset[ax - AXIS_LETTERS]);
         } else if (letter == 'D') {
             good = parse_double(value, t.diameter);
         } else if (letter == 'I') {
@@ -103,7 +105,7 @@ std::string format_tool(const Tool& t)
     std::string s = "T" + std::to_string(t.toolno) + " P" + std::to_string(t.pocket);
     for (int k = 0; k < 9; ++k)
         if (t.offset[k] != 0) {
-            std::snprintf(buf, sizeof buf, " %c%+f", AXES[k], t.offset[k]);
+            std::snprintf(buf, sizeof buf, " %c%+f", AXIS_LETTERS[k], t.offset[k]);
             s += buf;
         }
     if (t.diameter != 0) {

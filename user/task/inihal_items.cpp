@@ -30,7 +30,7 @@ IniItem joint_item(int j, const char* key, M JointConfig::*field, int command, I
 
 IniItem axis_item(int a, const char* key, double AxisConfig::*field, int command)
 {
-    std::string letter(1, static_cast<char>(AXIS_LETTERS[a] - 'A' + 'a'));
+    std::string letter(1, ini::axis_lower(a));
     return {"ini." + letter + "." + key, IniPinType::Float,
             [a, field](const TaskConfig& c) { return c.axis[a].*field; },
             [a, field](TaskConfig& c, double v) { c.axis[a].*field = v; },

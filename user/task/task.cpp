@@ -448,8 +448,7 @@ void Task::start_next_mdi()
     }
     mdi_current_ = mdi_queue_.front();
     mdi_queue_.pop_front();
-    if (canon_->queue().empty() && motion_idle())
-        synch_interp();
+    synch_interp_if_idle();
     in_interp_ = true;
     aborted_ = false;
     rs274::Status s = interp_->execute_mdi(mdi_current_.line);
@@ -484,6 +483,23 @@ void Task::check_waiters()
         server_->reply(waiters_[i].client, waiters_[i].serial, r > 0 ? "DONE" : "ERROR " + err);
         waiters_.erase(waiters_.begin() + static_cast<long>(i));
     }
+}
+
+void Task::synch_interp_if_idle()
+{
+    if (!canon_->queue().empty())
+        return;
+    // A command sent this cycle (the switch to COORD that MDI or AUTO mode asks for, a
+    // machine on) shows in the status only a servo cycle or two later; a position read
+    // before that can be the one from before (motion's motor offsets not yet applied).
+    // Wait for it, a few milliseconds at most, rather than start from a stale position.
+    auto deadline = Clock::now() + milliseconds(200);
+    while (static_cast<int32_t>(mst_.heartbeat - busy_until_heartbeat_) < 0 && Clock::now() < deadline) {
+        usleep(1000);
+        read_motion();
+    }
+    if (motion_idle())
+        synch_interp();
 }
 
 void Task::synch_interp()

@@ -114,6 +114,8 @@ private:
     void do_estop_actions();
     void machine_off(bool estop);
     void abort_task(const std::string& why);
+    // the interpreter starts from motion's commanded position (an idle, settled motion only)
+    void synch_interp_if_idle();
     void synch_interp();
 
     // commands (task_commands.cpp)

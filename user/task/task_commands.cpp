@@ -340,8 +340,7 @@ std::string Task::cmd_program(int client, const bus::Request& r)
         error_all(e);
         return v + ": " + e;
     }
-    if (canon_->queue().empty() && motion_idle())
-        synch_interp();
+    synch_interp_if_idle();
     if (start > 1) {
         // blocks before the start line set the modal state but move nothing
         canon_->set_skip(true);
@@ -376,8 +375,8 @@ std::string Task::cmd_manual(const bus::Request& r)
     std::string err;
     // a joint number (-1 all) or an axis letter (teleop jogs): 1 joint, 2 axis, 0 neither
     auto joint_arg = [&](const std::string& s, motion_command& c) -> int {
-        if (s.size() == 1 && axis_letter_index(s[0]) >= 0) {
-            c.axis = axis_letter_index(s[0]);
+        if (s.size() == 1 && ini::axis_index(s[0]) >= 0) {
+            c.axis = ini::axis_index(s[0]);
             c.joint = -1;
             return 2;
         }

@@ -13,15 +13,6 @@
 
 namespace hal::task {
 
-const char AXIS_LETTERS[] = "XYZABCUVW";
-
-int axis_letter_index(char c)
-{
-    c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    const char* p = c ? std::strchr(AXIS_LETTERS, c) : nullptr;
-    return p ? static_cast<int>(p - AXIS_LETTERS) : -1;
-}
-
 std::string ini_relative(const std::string& ini_path, const std::string& file)
 {
     if (file.empty() || file[0] == '/')
@@ -106,7 +97,7 @@ Result<TaskConfig> read_task_config(const ini::IniFile& ini)
         }
     }
     for (char letter : c.coordinates) {
-        int a = axis_letter_index(letter);
+        int a = ini::axis_index(letter);
         AxisConfig& ax = c.axis[a];
         ax.present = true;
         std::string sec = std::string("AXIS_") + AXIS_LETTERS[a];

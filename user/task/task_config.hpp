@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "hal/result.hpp"
+#include "ini/axes.hpp"
 #include "ini/ini_file.hpp"
 #include "motion_if.h"
 
@@ -82,9 +83,7 @@ motion_command joint_command(const TaskConfig& cfg, int joint, int type);
 motion_command axis_command(const TaskConfig& cfg, int axis, int type);
 motion_command traj_command(const TaskConfig& cfg, int type);
 
-// "X" -> 0 ... "W" -> 8, -1 for anything else.
-int axis_letter_index(char c);
-extern const char AXIS_LETTERS[];   // "XYZABCUVW"
+using hal::ini::AXIS_LETTERS;
 
 // A path from the INI file: absolute as given, else relative to the INI's directory.
 std::string ini_relative(const std::string& ini_path, const std::string& file);

@@ -164,7 +164,7 @@ bus::StatusLines Task::status_lines() const
     for (int a = 0; a < MOTION_MAX_AXES; ++a) {
         if (!cfg_.axis[a].present)
             continue;
-        std::string p = std::string("axis.") + static_cast<char>(AXIS_LETTERS[a] - 'A' + 'a') + ".";
+        std::string p = std::string("axis.") + ini::axis_lower(a) + ".";
         add(p + "pos_cmd", f(mst_.carte_pos_cmd.v[a]));
         add(p + "pos_fb", f(mst_.carte_pos_fb.v[a]));
         add(p + "min_limit", f(mst_.axis[a].min_pos_limit));

@@ -50,7 +50,12 @@ bus wait traj.jogging 0 5 || exit 1
 bus wait axis.x.velocity 0.000000 5 || exit 1
 d=$(bus status axis.x.pos_cmd)
 awk -v c="$c" -v d="$d" 'BEGIN { print (d < c - 0.5) ? "axis x jogged minus and stopped" : "x at " c " then " d }'
-printf 'pins y %.3f z %.3f x-matches %s\n' "$(pin axis.y.pos-commanded)" "$(pin axis.z.pos-feedback)" \
-	"$(awk -v p="$(pin axis.x.pos-commanded)" -v d="$d" 'BEGIN { print (p - d < 0.001 && d - p < 0.001) ? "yes" : "no" }')"
+# halui copies the status to its pins at 50 Hz: give it a few of its cycles to show x's stop
+x_matches() {
+	awk -v p="$(pin axis.x.pos-commanded)" -v d="$d" 'BEGIN { print (p - d < 0.001 && d - p < 0.001) ? "yes" : "no" }'
+}
+n=0
+while [ "$(x_matches)" != yes ] && [ $n -lt 50 ]; do sleep 0.05; n=$((n + 1)); done
+printf 'pins y %.3f z %.3f x-matches %s\n' "$(pin axis.y.pos-commanded)" "$(pin axis.z.pos-feedback)" "$(x_matches)"
 joints | sed 's/joints [^ ]* /joints X /'
 machine_stop
