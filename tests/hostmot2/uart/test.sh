@@ -4,6 +4,7 @@
 # bit rate is changed behind the driver's back (raw write to the RX rate register
 # 0x6600): the bytes are lost, rx-count stays.
 set -e
+. ../../helpers/wait-getp.sh
 show() {
 	echo "$1: tx-send $(halcmd getp mesa-uart.0.tx-send) rx-count $(halcmd getp mesa-uart.0.rx-count)" \
 	     "rx $(halcmd getp mesa-uart.0.rx-data-00) $(halcmd getp mesa-uart.0.rx-data-01)" \
@@ -24,7 +25,7 @@ halcmd setp mesa-uart.0.tx-data-01 0x4d
 halcmd setp mesa-uart.0.tx-data-02 0x32
 halcmd setp mesa-uart.0.tx-bytes 3
 halcmd setp mesa-uart.0.tx-send TRUE
-sleep 0.3
+wait_getp mesa-uart.0.rx-count 3
 show "3 bytes"
 halcmd setp mesa-uart.0.tx-data-00 0xff
 halcmd setp mesa-uart.0.tx-data-01 0x00
@@ -32,7 +33,7 @@ halcmd setp mesa-uart.0.tx-data-02 0x7e
 halcmd setp mesa-uart.0.tx-data-03 0x81
 halcmd setp mesa-uart.0.tx-bytes 4
 halcmd setp mesa-uart.0.tx-send TRUE
-sleep 0.3
+wait_getp mesa-uart.0.rx-count 7
 show "4 more"
 halcmd setp hm2_5i23.0.raw.write_address 0x6600
 halcmd setp hm2_5i23.0.raw.write_data 1000

@@ -7,27 +7,39 @@
 
 namespace {
 
-// An INI file of its own per test (ctest runs the tests as parallel processes).
-std::string write_ini(const std::string& text)
-{
+// A directory of its own per test (ctest runs the tests as parallel processes), removed
+// at the end; write() puts an INI file there.
+struct IniDir {
 	std::string dir = ::testing::TempDir() + "interp_config." +
 	                  ::testing::UnitTest::GetInstance()->current_test_info()->name();
-	std::string mk = "mkdir -p " + dir;
-	EXPECT_EQ(system(mk.c_str()), 0);
-	std::ofstream(dir + "/m.ini") << text;
-	return dir + "/m.ini";
-}
+	IniDir()
+	{
+		std::string mk = "mkdir -p " + dir;
+		EXPECT_EQ(system(mk.c_str()), 0);
+	}
+	~IniDir()
+	{
+		std::string rm = "rm -rf " + dir;
+		EXPECT_EQ(system(rm.c_str()), 0);
+	}
+	std::string write(const std::string& text, const std::string& name = "m.ini") const
+	{
+		std::ofstream(dir + "/" + name) << text;
+		return dir + "/" + name;
+	}
+};
 
 }   // namespace
 
 TEST(InterpConfig, KeysAndRelativePaths)
 {
-	std::string path = write_ini("[TRAJ]\nLINEAR_UNITS = inch\nCOORDINATES = x Y z a\n"
-	                             "[RS274NGC]\nPARAMETER_FILE = sim.var\nSUBROUTINE_PATH = subs: /abs/s\n"
-	                             "ORIENT_OFFSET = 12.5\nDISABLE_FANUC_STYLE_SUB = 1\n"
-	                             "[DISPLAY]\nPROGRAM_PREFIX = nc\n"
-	                             "[EMCIO]\nTOOL_TABLE = /t/tool.tbl\nRANDOM_TOOLCHANGER = 1\n");
-	std::string dir = path.substr(0, path.rfind('/'));
+	IniDir d;
+	std::string path = d.write("[TRAJ]\nLINEAR_UNITS = inch\nCOORDINATES = x Y z a\n"
+	                           "[RS274NGC]\nPARAMETER_FILE = sim.var\nSUBROUTINE_PATH = subs: /abs/s\n"
+	                           "ORIENT_OFFSET = 12.5\nDISABLE_FANUC_STYLE_SUB = 1\n"
+	                           "[DISPLAY]\nPROGRAM_PREFIX = nc\n"
+	                           "[EMCIO]\nTOOL_TABLE = /t/tool.tbl\nRANDOM_TOOLCHANGER = 1\n");
+	const std::string& dir = d.dir;
 	rs274::Config c;
 	std::string err;
 	ASSERT_TRUE(rs274::Config::from_ini(path, c, err)) << err;
@@ -45,7 +57,8 @@ TEST(InterpConfig, KeysAndRelativePaths)
 
 TEST(InterpConfig, BadCoordinatesLetterNamesFileAndLine)
 {
-	std::string path = write_ini("[TRAJ]\nLINEAR_UNITS = mm\nCOORDINATES = X Y Q\n");
+	IniDir d;
+	std::string path = d.write("[TRAJ]\nLINEAR_UNITS = mm\nCOORDINATES = X Y Q\n");
 	rs274::Config c;
 	std::string err;
 	EXPECT_FALSE(rs274::Config::from_ini(path, c, err));
@@ -54,14 +67,15 @@ TEST(InterpConfig, BadCoordinatesLetterNamesFileAndLine)
 
 TEST(InterpConfig, BadUnitsAndNumbers)
 {
+	IniDir d;
 	rs274::Config c;
 	std::string err;
-	std::string path = write_ini("[TRAJ]\nLINEAR_UNITS = furlong\n");
+	std::string path = d.write("[TRAJ]\nLINEAR_UNITS = furlong\n");
 	EXPECT_FALSE(rs274::Config::from_ini(path, c, err));
 	EXPECT_EQ(err, path + ": [TRAJ]LINEAR_UNITS must be mm or inch: furlong");
-	EXPECT_FALSE(rs274::Config::from_ini(write_ini("[RS274NGC]\nORIENT_OFFSET = ten\n"), c, err));
+	EXPECT_FALSE(rs274::Config::from_ini(d.write("[RS274NGC]\nORIENT_OFFSET = ten\n", "n.ini"), c, err));
 	EXPECT_NE(err.find(":2:"), std::string::npos) << err;
 	EXPECT_NE(err.find("ORIENT_OFFSET"), std::string::npos) << err;
-	EXPECT_FALSE(rs274::Config::from_ini(::testing::TempDir() + "no-such.ini", c, err));
+	EXPECT_FALSE(rs274::Config::from_ini(d.dir + "/no-such.ini", c, err));
 	EXPECT_NE(err.find("no-such.ini"), std::string::npos) << err;
 }
