@@ -262,7 +262,7 @@ static void close_boards(void)
 
 int rtapi_app_main(void)
 {
-	int k;
+	void *mem;
 
 	for (num_boards = 0; num_boards < MAX_BOARDS && ioaddr[num_boards] != -1;)
 		num_boards++;
@@ -271,22 +271,11 @@ int rtapi_app_main(void)
 				"is -1)\n");
 		return -EINVAL;
 	}
-	for (k = num_boards; k < MAX_BOARDS; k++) {
-		if (config[k] && *config[k]) {
-			rtapi_print_msg(RTAPI_MSG_ERR, "hm2_7i43: config= entry %d has no ioaddr= "
-					"entry\n", k);
-			return -EINVAL;
-		}
-	}
-	comp_id = hal_init("hm2_7i43");
+	comp_id = hm2_llio_init_boards("hm2_7i43", "ioaddr", config, MAX_BOARDS, num_boards,
+				       sizeof(*boards), &mem);
 	if (comp_id < 0)
 		return comp_id;
-	boards = hal_malloc(num_boards * sizeof(*boards));
-	if (!boards) {
-		hal_exit(comp_id);
-		return -ENOMEM;
-	}
-	memset(boards, 0, num_boards * sizeof(*boards));
+	boards = mem;
 	return hm2_llio_setup_boards(comp_id, num_boards, setup_board, close_boards);
 }
 

@@ -633,6 +633,7 @@ static void close_boards(void)
 
 int rtapi_app_main(void)
 {
+	void *mem;
 	int k;
 
 	for (num_boards = 0; num_boards < MAX_BOARDS && board_ip[num_boards] && *board_ip[num_boards];)
@@ -642,20 +643,11 @@ int rtapi_app_main(void)
 				"e.g. board_ip=192.168.1.121)\n");
 		return -EINVAL;
 	}
-	for (k = num_boards; k < MAX_BOARDS; k++) {
-		if (config[k] && *config[k]) {
-			rtapi_print_msg(RTAPI_MSG_ERR, "hm2_eth: config= entry %d has no board_ip= entry\n", k);
-			return -EINVAL;
-		}
-	}
-	comp_id = hal_init("hm2_eth");
+	comp_id = hm2_llio_init_boards("hm2_eth", "board_ip", config, MAX_BOARDS, num_boards,
+				       sizeof(*boards), &mem);
 	if (comp_id < 0)
 		return comp_id;
-	boards = hal_malloc(num_boards * sizeof(*boards));
-	if (!boards) {
-		hal_exit(comp_id);
-		return -ENOMEM;
-	}
+	boards = mem;
 	for (k = 0; k < num_boards; k++)
 		boards[k].sock = -1;
 	return hm2_llio_setup_boards(comp_id, num_boards, setup_board, close_boards);

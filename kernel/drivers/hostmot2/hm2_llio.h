@@ -64,6 +64,33 @@ int hm2_register(struct hm2_llio *llio, const char *config);
  * hal_exit() of the board driver's component. */
 void hm2_unregister(struct hm2_llio *llio);
 
+/* The start of the rtapi_app_main() of a board driver with a board per module-parameter
+ * entry (hm2_7i43, hm2_eth), once it counted n boards: a config= entry past them (of
+ * max) names no board and is refused, naming `key` (the parameter that makes a board);
+ * then the component `name` joins HAL and *boards gets n zeroed structs of `size` bytes
+ * in HAL memory. The component id, or -errno (nothing left behind). */
+static inline int hm2_llio_init_boards(const char *name, const char *key, char **config, int max,
+				       int n, unsigned long size, void **boards)
+{
+	int k, comp_id;
+
+	for (k = n; k < max; k++) {
+		if (config[k] && *config[k]) {
+			rtapi_print_msg(RTAPI_MSG_ERR, "%s: config= entry %d has no %s= entry\n", name, k, key);
+			return -EINVAL;
+		}
+	}
+	comp_id = hal_init(name);
+	if (comp_id < 0)
+		return comp_id;
+	*boards = hal_malloc((long)(n * size));	/* zeroed */
+	if (!*boards) {
+		hal_exit(comp_id);
+		return -ENOMEM;
+	}
+	return comp_id;
+}
+
 /* The end of the rtapi_app_main() of a board driver with a board per module-parameter
  * entry (hm2_7i43, hm2_eth, hm2_sim): set up boards 0..n-1 in order; on the first
  * failure undo() releases every board set up so far and the component leaves HAL.

@@ -3,7 +3,8 @@
 # no firmware=, a missing file, a bitfile for the other FPGA size, a truncated file,
 # a bitstream the FPGA does not accept (stored bit-reversed: DONE never rises, so no
 # HostMot2 cookie answers, with 32-bit and then byte transfers), and a port with no
-# board on it (every EPP cycle times out during the reset).
+# board on it (every EPP cycle times out during the reset); no port (ioaddr=-1) and a
+# config= entry without its ioaddr= entry.
 . ../../helpers/hm2-bitfile.sh
 load() {
 	halcmd loadrt hm2_7i43 "$@" >"$TEST_TMPDIR/msg" 2>&1
@@ -23,6 +24,8 @@ load ioaddr=0x2000 config="\"firmware=hm2/7i43/small.BIT\""
 load ioaddr=0x2000 config="\"firmware=hm2/7i43/short.BIT\""
 load ioaddr=0x2000 config="\"firmware=hm2/7i43/reversed.BIT\""
 load ioaddr=0x3000 config="\"firmware=hm2/7i43/good.BIT\""
+load ioaddr=-1
+load ioaddr=0x2000 config=a,b
 load ioaddr=0x2000 config="\"firmware=hm2/7i43/good.BIT\""
 halcmd unloadrt hm2_7i43
 halrun -U
