@@ -48,7 +48,7 @@ kmod: configure
 	@scripts/kernel-test-deps --headers
 	cmake --build $(BUILD) -j$(JOBS) --target comp_sources
 	COMP_GEN_DIR=$(abspath $(BUILD))/gen $(MAKE) -f kernel/Makefile.kmod -j$(JOBS) KMOD_WITH_SELFTESTS=1
-	kernel/kmod-deps-check.sh $$($(MAKE) -s -f kernel/Makefile.kmod print-KMOD_BUILD)
+	kernel/kmod-deps-check.sh $$($(MAKE) -s --no-print-directory -f kernel/Makefile.kmod print-KMOD_BUILD)
 
 kernel-test: build
 	KERNEL_TEST_RT=1 scripts/kernel-test-deps

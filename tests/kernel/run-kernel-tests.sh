@@ -105,7 +105,7 @@ if [ "$step" != boot ]; then
 # The modules: make kmod's directory for this kernel (the self-test modules are part of
 # make kmod's build too, so neither build undoes the other), unless a subset
 # (KTEST_MANIFEST: only the modules listed there) or other flags are asked for.
-kmod="make -s -f $root/kernel/Makefile.kmod KDIR=$kdir"
+kmod="make -s --no-print-directory -f $root/kernel/Makefile.kmod KDIR=$kdir"
 if [ -n "${KTEST_MANIFEST:-}${KMOD_CFLAGS:-}" ]; then
 	mods=$out/modules
 else
