@@ -21,7 +21,10 @@ mkdir -p "$cache"
 if [ ! -f "$tarball" ]; then
 	echo "== test-root: bootstrapping Debian 12 into $root (cached as $tarball)"
 	rm -rf "$root"
+	# a second try when the mirror dropped a download (make test runs this in CI)
 	debootstrap --variant=minbase bookworm "$root" "$mirror" >"$cache/debootstrap.log" 2>&1 ||
+		{ rm -rf "$root"; sleep 10; debootstrap --variant=minbase bookworm "$root" "$mirror" \
+			>>"$cache/debootstrap.log" 2>&1; } ||
 		{ tail -n 20 "$cache/debootstrap.log" >&2; exit 1; }
 	cat >"$root/etc/apt/sources.list" <<LIST
 deb $mirror bookworm main
@@ -31,11 +34,13 @@ LIST
 	# no daemons may start inside the root
 	printf '#!/bin/sh\nexit 101\n' >"$root/usr/sbin/policy-rc.d"
 	chmod +x "$root/usr/sbin/policy-rc.d"
-	chroot "$root" apt-get update -qq >>"$cache/debootstrap.log" 2>&1
-	# shellcheck disable=SC2086
-	chroot "$root" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
-		--no-install-recommends $pkgs >>"$cache/debootstrap.log" 2>&1 ||
-		{ tail -n 20 "$cache/debootstrap.log" >&2; exit 1; }
+	install_pkgs() {
+		chroot "$root" apt-get update -qq >>"$cache/debootstrap.log" 2>&1
+		# shellcheck disable=SC2086
+		chroot "$root" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
+			--no-install-recommends $pkgs >>"$cache/debootstrap.log" 2>&1
+	}
+	install_pkgs || { sleep 10; install_pkgs; } || { tail -n 20 "$cache/debootstrap.log" >&2; exit 1; }
 	chroot "$root" apt-get clean
 	tar -C "$root" -cf "$tarball.tmp" . && mv "$tarball.tmp" "$tarball"
 	# older roots (other package lists) are of no more use
