@@ -50,14 +50,8 @@ double Session::axis_value(const std::string& field, int axis) const
 std::vector<double> Session::offsets(const std::string& k) const
 {
     // "task.g5x_offset" lists the configured axes (traj.axes) in X..W order
-    std::vector<double> v(9, 0.0);
-    std::string axes = key("traj.axes");
-    std::vector<std::string> w = split_words(key(k));
-    for (size_t i = 0; i < axes.size() && i < w.size(); ++i) {
-        int a = hal::ini::axis_index(axes[i]);
-        if (a >= 0)
-            v[static_cast<size_t>(a)] = std::strtod(w[i].c_str(), nullptr);
-    }
+    std::vector<double> v(hal::ini::AXIS_COUNT, 0.0);
+    hal::ini::values_by_axis(key("traj.axes"), key(k).c_str(), v.data());
     return v;
 }
 

@@ -47,17 +47,7 @@ void pose(const Map& st, const std::string& key, const std::string& axes, double
     const std::string* s = get(st, key);
     if (!s)
         return;
-    const char* p = s->c_str();
-    for (char letter : axes) {
-        char* end = nullptr;
-        double v = std::strtod(p, &end);
-        if (end == p)
-            return;
-        p = end;
-        int a = ini::axis_index(letter);
-        if (a >= 0)
-            out[a] = std::isfinite(v) ? v : 0;
-    }
+    ini::values_by_axis(axes, s->c_str(), out);
 }
 
 // the D field of tool 'tool' in the table lines "T1 P1 Z+10.000000 D+6.000000 ;remark"

@@ -5,7 +5,10 @@
 #pragma once
 
 #include <cctype>
+#include <cmath>
+#include <cstdlib>
 #include <cstring>
+#include <string>
 
 namespace hal::ini {
 
@@ -22,5 +25,22 @@ inline int axis_index(char c)
 
 // the lower-case letter of axis `i` (0..8), as HAL names spell it (axis.x.*)
 inline char axis_lower(int i) { return static_cast<char>(AXIS_LETTERS[i] - 'A' + 'a'); }
+
+// "1.5 -2 0", one number per letter of `letters` (task's traj.axes: the configured axes,
+// X..W order), into out[axis] (AXIS_COUNT entries); the axes not listed keep their
+// value, a non-finite number is 0, and the first word that is not a number ends it.
+inline void values_by_axis(const std::string& letters, const char* text, double* out)
+{
+    for (char letter : letters) {
+        char* end = nullptr;
+        double v = std::strtod(text, &end);
+        if (end == text)
+            return;
+        text = end;
+        int a = axis_index(letter);
+        if (a >= 0)
+            out[a] = std::isfinite(v) ? v : 0;
+    }
+}
 
 }   // namespace hal::ini
