@@ -6,30 +6,15 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "hal/numbers.hpp"
 #include "ini/axes.hpp"
 #include "session.hpp"
 
 namespace hal::emcrsh {
 
-static bool number(const std::string& s, double& out)
-{
-    char* end = nullptr;
-    double v = std::strtod(s.c_str(), &end);
-    if (s.empty() || *end != '\0' || !std::isfinite(v))
-        return false;
-    out = v;
-    return true;
-}
-
-static bool integer(const std::string& s, long& out)
-{
-    char* end = nullptr;
-    long v = std::strtol(s.c_str(), &end, 10);
-    if (s.empty() || *end != '\0' || v < -1000000 || v > 1000000)
-        return false;
-    out = v;
-    return true;
-}
+static bool number(const std::string& s, double& out) { return parse_finite(s, out); }
+// joint, tool and line numbers: six digits are plenty
+static bool integer(const std::string& s, long& out) { return parse_integer(s, out, -1000000, 1000000); }
 
 static std::string g(double v)
 {

@@ -10,30 +10,17 @@
 #include <fstream>
 #include <set>
 
+#include "hal/numbers.hpp"
 #include "ini/axes.hpp"
 
 namespace hal::io {
 
 using hal::ini::AXIS_LETTERS;
 
-static bool parse_double(const std::string& s, double& v)
-{
-    if (s.empty())
-        return false;
-    char* end = nullptr;
-    errno = 0;
-    v = std::strtod(s.c_str(), &end);
-    return *end == '\0' && errno == 0 && std::isfinite(v);
-}
-
 static bool parse_int(const std::string& s, int& v)
 {
-    if (s.empty())
-        return false;
-    char* end = nullptr;
-    errno = 0;
-    long l = std::strtol(s.c_str(), &end, 10);
-    if (*end != '\0' || errno != 0 || l < -2147483647L || l > 2147483647L)
+    long l = 0;
+    if (!parse_integer(s, l, -2147483647L, 2147483647L))
         return false;
     v = static_cast<int>(l);
     return true;
@@ -75,13 +62,13 @@ Result<std::optional<Tool>> parse_tool_line(const std::string& raw)
             good = parse_int(value, t.pocket) && t.pocket >= 0 && t.pocket < POCKETS_MAX;
             have_p = true;
         } else if (ax && letter != '\0') {
-            good = parse_double(value, t.offset[ax - AXIS_LETTERS]);
+            good = parse_finite(value, t.offset[ax - AXIS_LETTERS]);
         } else if (letter == 'D') {
-            good = parse_double(value, t.diameter);
+            good = parse_finite(value, t.diameter);
         } else if (letter == 'I') {
-            good = parse_double(value, t.frontangle);
+            good = parse_finite(value, t.frontangle);
         } else if (letter == 'J') {
-            good = parse_double(value, t.backangle);
+            good = parse_finite(value, t.backangle);
         } else if (letter == 'Q') {
             good = parse_int(value, t.orientation) && t.orientation >= 0 && t.orientation <= 9;
         } else {

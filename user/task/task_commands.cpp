@@ -7,25 +7,11 @@
 #include <cstdlib>
 #include <sys/stat.h>
 
+#include "hal/numbers.hpp"
 #include "task.hpp"
 
 namespace hal::task {
 
-static bool to_double(const std::string& s, double& v)
-{
-    char* end = nullptr;
-    errno = 0;
-    v = std::strtod(s.c_str(), &end);
-    return !s.empty() && *end == '\0' && errno == 0 && std::isfinite(v);
-}
-
-static bool to_int(const std::string& s, long& v)
-{
-    char* end = nullptr;
-    errno = 0;
-    v = std::strtol(s.c_str(), &end, 10);
-    return !s.empty() && *end == '\0' && errno == 0;
-}
 
 static int on_off(const std::string& s)
 {
@@ -92,7 +78,7 @@ void Task::on_io_line(int client, const std::string& line)
         return;
     if (w[0] == "IOACK" && w.size() >= 3) {
         long n = 0;
-        if (!to_int(w[1], n))
+        if (!parse_integer(w[1], n))
             return;
         if (w[2] == "DONE")
             io_done_[n] = "";
@@ -119,7 +105,7 @@ void Task::on_io_line(int client, const std::string& line)
         }
     } else if (w[0] == "IOTOOLS" && w.size() >= 2) {
         long n = 0;
-        if (!to_int(w[1], n) || n < 0 || n > 100000)
+        if (!parse_integer(w[1], n) || n < 0 || n > 100000)
             return;
         io_.tools_in.clear();
         io_.tools_expected = static_cast<size_t>(n);
@@ -320,7 +306,7 @@ std::string Task::cmd_program(int client, const bus::Request& r)
     }
     // RUN [line] and STEP
     long start = 0;
-    if (v == "RUN" && !r.args.empty() && (!to_int(r.args[0], start) || start < 0))
+    if (v == "RUN" && !r.args.empty() && (!parse_integer(r.args[0], start) || start < 0))
         return "RUN: '" + bus::sanitize(r.args[0], 40) + "' is not a line number";
     if (v == "STEP" && interp_state_ != InterpState::IDLE) {
         // one more block: from a pause or from the previous step
@@ -381,7 +367,7 @@ std::string Task::cmd_manual(const bus::Request& r)
             return 2;
         }
         long j = 0;
-        if (!to_int(s, j) || j < -1 || j >= cfg_.joints)
+        if (!parse_integer(s, j) || j < -1 || j >= cfg_.joints)
             return 0;
         c.joint = static_cast<int>(j);
         c.axis = c.joint;
@@ -423,12 +409,12 @@ std::string Task::cmd_manual(const bus::Request& r)
             return v + ": joint jogs need joint mode (TELEOP 0)";
         if (v != "JOG_STOP") {
             double vel = 0;
-            if (!to_double(r.args[1], vel))
+            if (!parse_finite(r.args[1], vel))
                 return v + ": '" + bus::sanitize(r.args[1], 40) + "' is not a velocity";
             c.vel = v == "JOG_CONT" ? vel : std::fabs(vel);
             if (v != "JOG_CONT") {
                 double x = 0;
-                if (!to_double(r.args[2], x))
+                if (!parse_finite(r.args[2], x))
                     return v + ": '" + bus::sanitize(r.args[2], 40) + "' is not a number";
                 c.offset = v == "JOG_INCR" && vel < 0 ? -std::fabs(x) : x;
             }
@@ -441,9 +427,9 @@ std::string Task::cmd_manual(const bus::Request& r)
             d += static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
         double rpm = 0;
         long sp = -1;
-        if (r.args.size() > 1 && !to_double(r.args[1], rpm))
+        if (r.args.size() > 1 && !parse_finite(r.args[1], rpm))
             return "SPINDLE: '" + bus::sanitize(r.args[1], 40) + "' is not a speed";
-        if (r.args.size() > 2 && (!to_int(r.args[2], sp) || sp < -1 || sp >= cfg_.spindles))
+        if (r.args.size() > 2 && (!parse_integer(r.args[2], sp) || sp < -1 || sp >= cfg_.spindles))
             return "SPINDLE: '" + bus::sanitize(r.args[2], 40) + "' is not a spindle number";
         if (cfg_.spindles == 0)
             return "SPINDLE: no spindles configured ([TRAJ]SPINDLES = 0)";
@@ -473,7 +459,7 @@ std::string Task::cmd_manual(const bus::Request& r)
         long sp = -1;
         if (on < 0)
             return "BRAKE: '" + bus::sanitize(r.args[0], 40) + "' is not ON or OFF";
-        if (r.args.size() > 1 && (!to_int(r.args[1], sp) || sp < -1 || sp >= cfg_.spindles))
+        if (r.args.size() > 1 && (!parse_integer(r.args[1], sp) || sp < -1 || sp >= cfg_.spindles))
             return "BRAKE: '" + bus::sanitize(r.args[1], 40) + "' is not a spindle number";
         motion_command c = mcmd(on ? MOTCMD_SPINDLE_BRAKE_ENGAGE : MOTCMD_SPINDLE_BRAKE_RELEASE);
         c.spindle = static_cast<int>(sp);
@@ -494,7 +480,7 @@ std::string Task::cmd_io(int client, const bus::Request& r)
     } else if (v == "TOOL_OFFSET") {
         long tool = 0;
         double length = 0, diameter = 0;
-        if (!to_int(r.args[0], tool) || tool < 0 || !to_double(r.args[1], length) || !to_double(r.args[2], diameter))
+        if (!parse_integer(r.args[0], tool) || tool < 0 || !parse_finite(r.args[1], length) || !parse_finite(r.args[2], diameter))
             return "TOOL_OFFSET: needs TOOL LENGTH DIAMETER (numbers)";
         // the tool keeps its pocket and its other fields (the interpreter has them)
         int pocket = 0;
@@ -549,7 +535,7 @@ std::string Task::cmd_setting(const bus::Request& r)
     }
     if (v == "DEBUG") {
         long level = 0;
-        if (!to_int(r.args[0], level))
+        if (!parse_integer(r.args[0], level))
             return "DEBUG: '" + bus::sanitize(r.args[0], 40) + "' is not a number";
         debug_ = static_cast<int>(level);
         motion_command c = mcmd(MOTCMD_SET_DEBUG);
@@ -559,7 +545,7 @@ std::string Task::cmd_setting(const bus::Request& r)
     if (v == "PROBE_CLEAR")
         return send_motion(mcmd(MOTCMD_CLEAR_PROBE_FLAGS), &err) ? "" : "PROBE_CLEAR: " + err;
     double x = 0;
-    if (!to_double(r.args[0], x) || x < 0)
+    if (!parse_finite(r.args[0], x) || x < 0)
         return v + ": '" + bus::sanitize(r.args[0], 40) + "' is not a number >= 0";
     if (v == "FEED_OVERRIDE" || v == "RAPID_OVERRIDE") {
         motion_command c = mcmd(v == "FEED_OVERRIDE" ? MOTCMD_FEED_SCALE : MOTCMD_RAPID_SCALE);
@@ -568,7 +554,7 @@ std::string Task::cmd_setting(const bus::Request& r)
     }
     if (v == "SPINDLE_OVERRIDE") {
         long sp = -1;
-        if (r.args.size() > 1 && (!to_int(r.args[1], sp) || sp < -1 || sp >= cfg_.spindles))
+        if (r.args.size() > 1 && (!parse_integer(r.args[1], sp) || sp < -1 || sp >= cfg_.spindles))
             return v + ": '" + bus::sanitize(r.args[1], 40) + "' is not a spindle number";
         motion_command c = mcmd(MOTCMD_SPINDLE_SCALE);
         c.spindle = static_cast<int>(sp);
