@@ -77,8 +77,8 @@ launch_check() {
 	name=$1
 	for prog in milltask io emcbus; do
 		if ! command -v $prog > /dev/null 2>&1; then
-			echo "launch: SKIPPED ($prog is not built yet: the task/iocontrol branch adds it)"
-			return 0
+			echo "launch: $prog failed: not on PATH (the build makes it)"
+			return 1
 		fi
 	done
 	rm -rf "$T/cfg"
