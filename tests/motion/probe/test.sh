@@ -4,6 +4,7 @@
 # comes, G38.2/G38.4 with motion.md's messages; a probe already in the target state
 # refuses the move; a trip during a non-probe move aborts it, during jogs stops them.
 . ../lib.sh
+. ../../helpers/wait-getp.sh
 motion_load 3
 halcmd loadrt comp count=1 || exit 1
 halcmd addf comp.0 servo-thread || exit 1
@@ -48,7 +49,8 @@ probe_move 6 1 2
 echo "probed x $(probed_x)"
 motcmd errors
 echo "== G38.4 to X 1 with the probe touching all along"
-halcmd setp comp.0.in0 -100
+halcmd setp comp.0.in0 -100 || exit 1
+wait_getp motion.probe-input TRUE || exit 1
 probe_move 7 2 1
 motcmd errors
 echo "== G38.5 to X 0: no error"
@@ -56,14 +58,16 @@ probe_move 8 3 0
 echo "X $(x)"
 motcmd errors
 echo "== a line through the contact at X 0.5"
-halcmd setp comp.0.in0 0.5
+halcmd setp comp.0.in0 0.5 || exit 1
+wait_getp motion.probe-input FALSE || exit 1
 motcmd --id 9 line 2 0 0 10 100 || exit 1
 motcmd wait-inpos 5 || exit 1
 echo "aborted before its end: $(inside 0.5 1.1 "$(x)")"
 echo "queue depth $(motcmd status | sed -n 3p | cut -d' ' -f3)"
 motcmd errors
 echo "== a joint jog through the contact at X 1.5"
-halcmd setp comp.0.in0 1.5
+halcmd setp comp.0.in0 1.5 || exit 1
+wait_getp motion.probe-input FALSE || exit 1
 motcmd free || exit 1
 motcmd wait-state free 5 || exit 1
 motcmd jog-abs 0 3 10 || exit 1
@@ -71,7 +75,8 @@ motcmd wait-inpos 5 || exit 1
 echo "stopped: $(inside 1.5 2.1 "$(x)")"
 motcmd errors
 echo "== a coordinate jog through the contact at X 2.5"
-halcmd setp comp.0.in0 2.5
+halcmd setp comp.0.in0 2.5 || exit 1
+wait_getp motion.probe-input FALSE || exit 1
 motcmd teleop || exit 1
 motcmd wait-state teleop 5 || exit 1
 motcmd jog-abs x 4 10 || exit 1
